@@ -1,0 +1,36 @@
+#include "cli_support.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+#include "dcel/io/graph_json.hpp"
+
+namespace dcel::cli {
+
+std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+std::string read_input(const std::string& path) {
+    std::FILE* f = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
+    if (f == nullptr) throw UsageError("cannot open " + path + ": " + std::strerror(errno));
+    std::string text;
+    char buffer[1 << 16];
+    std::size_t n = 0;
+    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
+    const bool failed = std::ferror(f) != 0;
+    if (f != stdin) std::fclose(f);
+    if (failed) throw UsageError("cannot read " + display_name(path));
+    return text;
+}
+
+PlanarGraph load_graph(const std::string& path) {
+    const std::string text = read_input(path);
+    return with_source(path, [&] { return io::read_graph(text); });
+}
+
+void write_stdout(std::string_view text) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+}
+
+}  // namespace dcel::cli

@@ -1,0 +1,14 @@
+// Each command adds its subcommand to the app and, when chosen, sets the
+// action main() runs after parsing.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include "cli_support.hpp"
+
+namespace dcel::cli {
+
+void add_faces_command(CLI::App& app, Action& action);
+void add_build_command(CLI::App& app, Action& action);
+
+}  // namespace dcel::cli

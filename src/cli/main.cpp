@@ -1,0 +1,39 @@
+// dcel: the command-line face of the exact reference DCEL.
+// Exit codes: 0 success, 1 invalid input or a difference found, 2 usage error.
+#include <cstdio>
+#include <new>
+
+#include "commands.hpp"
+#include "dcel/error.hpp"
+
+int main(int argc, char** argv) {
+    using namespace dcel::cli;
+    CLI::App app{"dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
+                 "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",
+                 "dcel"};
+    app.set_version_flag("--version", DCEL_VERSION);
+    app.require_subcommand(1);
+    app.fallthrough(false);
+    Action action;
+    add_faces_command(app, action);
+    add_build_command(app, action);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);  // prints help (stdout) or the error (stderr)
+        return code == 0 ? kExitOk : kExitUsage;
+    }
+    try {
+        return action();
+    } catch (const dcel::InvalidInput& e) {
+        std::fprintf(stderr, "dcel: %s\n", e.what());
+        return kExitInvalid;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "dcel: %s\n", e.what());
+        return kExitUsage;
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "dcel: out of memory: the input is too large for this machine\n");
+        return kExitInvalid;
+    }
+}

@@ -1,0 +1,106 @@
+#include "dcel/geometry/exact_sum.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+namespace dcel {
+namespace {
+
+struct Decomposed {
+    std::uint64_t mantissa;  // < 2^53; zero for +-0
+    int exponent;            // value = mantissa * 2^exponent
+    bool negative;
+};
+
+Decomposed decompose(double v) {
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    const bool negative = (bits >> 63U) != 0;
+    const auto biased = static_cast<int>((bits >> 52U) & 0x7FFU);
+    const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52U) - 1);
+    if (biased == 0) return {fraction, -1074, negative};  // zero or subnormal
+    return {fraction | (std::uint64_t{1} << 52U), biased - 1075, negative};
+}
+
+}  // namespace
+
+void ExactSum::accumulate(Register& reg, double a, double b) {
+    const Decomposed da = decompose(a);
+    const Decomposed db = decompose(b);
+    if (da.mantissa == 0 || db.mantissa == 0) return;
+    __extension__ typedef unsigned __int128 u128;  // NOLINT(modernize-use-using): __extension__ needs typedef
+    const u128 product = static_cast<u128>(da.mantissa) * db.mantissa;  // < 2^106
+    const int position = da.exponent + db.exponent - kLowestExponent;  // >= 28
+    const int limb = position / 64;
+    const int shift = position % 64;
+    // The product shifted by `shift` spans at most three limbs.
+    std::uint64_t parts[3];
+    parts[0] = static_cast<std::uint64_t>(product << shift);
+    const u128 high = shift == 0 ? (product >> 64U) : (product >> (64 - shift));
+    parts[1] = static_cast<std::uint64_t>(high);
+    parts[2] = static_cast<std::uint64_t>(high >> 64U);
+    std::uint64_t carry = 0;
+    int i = limb;
+    for (int k = 0; k < 3 || carry != 0; ++k, ++i) {
+        const std::uint64_t add = k < 3 ? parts[k] : 0;
+        const u128 sum = static_cast<u128>(reg[static_cast<std::size_t>(i)]) + add + carry;
+        reg[static_cast<std::size_t>(i)] = static_cast<std::uint64_t>(sum);
+        carry = static_cast<std::uint64_t>(sum >> 64U);
+    }
+}
+
+void ExactSum::add_product(double a, double b) {
+    const bool negative = std::signbit(a) != std::signbit(b);
+    accumulate(negative ? negative_ : positive_, a, b);
+}
+
+void ExactSum::subtract_product(double a, double b) {
+    const bool negative = std::signbit(a) != std::signbit(b);
+    accumulate(negative ? positive_ : negative_, a, b);
+}
+
+int ExactSum::compare(const Register& x, const Register& y) {
+    for (int i = kLimbs - 1; i >= 0; --i) {
+        const auto k = static_cast<std::size_t>(i);
+        if (x[k] != y[k]) return x[k] < y[k] ? -1 : 1;
+    }
+    return 0;
+}
+
+Sign ExactSum::sign() const {
+    const int c = compare(positive_, negative_);
+    return c > 0 ? Sign::Positive : (c < 0 ? Sign::Negative : Sign::Zero);
+}
+
+double ExactSum::to_double() const {
+    const int c = compare(positive_, negative_);
+    if (c == 0) return 0.0;
+    const Register& big = c > 0 ? positive_ : negative_;
+    const Register& small = c > 0 ? negative_ : positive_;
+    Register diff{};
+    std::uint64_t borrow = 0;
+    for (std::size_t i = 0; i < kLimbs; ++i) {
+        const std::uint64_t d = big[i] - small[i] - borrow;
+        borrow = (big[i] < small[i] || (big[i] == small[i] && borrow != 0)) ? 1 : 0;
+        diff[i] = d;
+    }
+    int top = kLimbs - 1;
+    while (diff[static_cast<std::size_t>(top)] == 0) --top;
+    // Gather the 64 most significant bits, and fold every bit below them into
+    // the lowest one (a sticky bit) so the conversion rounds correctly.
+    const auto t = static_cast<std::size_t>(top);
+    const int lead = std::countl_zero(diff[t]);
+    std::uint64_t head = diff[t] << lead;
+    bool sticky = false;
+    if (top > 0) {
+        if (lead > 0) head |= diff[t - 1] >> (64 - lead);
+        sticky = (lead > 0 ? (diff[t - 1] << lead) : diff[t - 1]) != 0;
+        for (std::size_t i = 0; i + 1 < t && !sticky; ++i) sticky = diff[i] != 0;
+    }
+    if (sticky) head |= 1U;
+    const int exponent = top * 64 - lead + kLowestExponent;  // weight of head's bit 0
+    const double magnitude = std::ldexp(static_cast<double>(head), exponent);
+    return c > 0 ? magnitude : -magnitude;
+}
+
+}  // namespace dcel

@@ -1,0 +1,24 @@
+// The input: a planar straight-line graph given as points and index pairs.
+#pragma once
+
+#include <vector>
+
+#include "dcel/geometry/point.hpp"
+#include "dcel/ids.hpp"
+
+namespace dcel {
+
+// An undirected edge between two vertices; edge k of the input becomes the
+// half-edges 2k (u->v) and 2k+1 (v->u).
+struct GraphEdge {
+    VertexId u;
+    VertexId v;
+    friend bool operator==(const GraphEdge&, const GraphEdge&) = default;
+};
+
+struct PlanarGraph {
+    std::vector<Point> vertices;
+    std::vector<GraphEdge> edges;
+};
+
+}  // namespace dcel

@@ -1,0 +1,43 @@
+// Reading and writing a PlanarGraph as JSON.
+//
+// Two input forms are accepted:
+//   {"vertices": [[x, y], ...], "edges": [[u, v], ...]}   (other keys are ignored)
+//   [[[x, y], ...], [[u, v], ...]]                        (positional)
+// Coordinates are finite JSON numbers, read correctly rounded. Vertex indexes
+// are non-negative integers below 2^32 - 1 (1.0 and 1e0 count as integers);
+// whether they name existing vertices is checked later, by build().
+//
+// Errors are InvalidInput with a one-line message naming the place: "line L,
+// column C: ..." for syntax errors, a JSON path for the rest, e.g.
+//   edges[0][0]: vertex index -1 is negative: ids count from 0
+//   vertices[2]: expected a point [x, y], found an array of 3 elements
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dcel/graph.hpp"
+#include "dcel/io/json_reader.hpp"
+
+namespace dcel::io {
+
+[[nodiscard]] PlanarGraph read_graph(std::string_view text);
+
+// One line, numbers in their shortest round-trip form, then "\n":
+//   {"vertices": [[0, 0], [1, 0.5]], "edges": [[0, 1]]}
+// A null vertex id is written as null (which read_graph rejects). Throws
+// InvalidInput(BadCoordinate) for a NaN or infinite coordinate, which JSON
+// cannot express.
+[[nodiscard]] std::string write_graph(const PlanarGraph& graph);
+
+namespace detail {
+// read_graph with caps on the counts (TooLarge beyond them); the public
+// function uses CountLimits{}, which is what 32-bit ids can name.
+[[nodiscard]] PlanarGraph read_graph(std::string_view text, const CountLimits& limits);
+// At a value position: an array of points [[x, y], ...] appended to `out`
+// (TooLarge past `limit` points). Shared with the dump reader.
+void read_points(JsonReader& r, std::vector<Point>& out, std::uint64_t limit);
+}  // namespace detail
+
+}  // namespace dcel::io

@@ -1,0 +1,303 @@
+// The exact predicates against an independent oracle: boost's cpp_rational,
+// which represents every double exactly and computes the determinant with
+// no rounding at all.
+#include <gtest/gtest.h>
+
+#include <boost/multiprecision/cpp_int.hpp>
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "dcel/geometry/area.hpp"
+#include "dcel/geometry/exact_sum.hpp"
+#include "dcel/geometry/predicates.hpp"
+#include "dcel/geometry/segments.hpp"
+
+namespace {
+
+using dcel::Point;
+using dcel::Sign;
+using Rational = boost::multiprecision::cpp_rational;
+
+Rational exact(double v) { return Rational(v); }
+
+Sign rational_sign(const Rational& r) { return r > 0 ? Sign::Positive : (r < 0 ? Sign::Negative : Sign::Zero); }
+
+Sign oracle_orient(Point a, Point b, Point c) {
+    const Rational det = (exact(b.x) - exact(a.x)) * (exact(c.y) - exact(a.y)) -
+                         (exact(b.y) - exact(a.y)) * (exact(c.x) - exact(a.x));
+    return rational_sign(det);
+}
+
+// Angle order by the textbook definition, in rationals: half-plane first
+// (upper: dy > 0, or dy == 0 and dx > 0), then the cross product.
+Sign oracle_compare_angle(Point c, Point a, Point b) {
+    const Rational ax = exact(a.x) - exact(c.x), ay = exact(a.y) - exact(c.y);
+    const Rational bx = exact(b.x) - exact(c.x), by = exact(b.y) - exact(c.y);
+    const int ha = (ay > 0 || (ay == 0 && ax > 0)) ? 0 : 1;
+    const int hb = (by > 0 || (by == 0 && bx > 0)) ? 0 : 1;
+    if (ha != hb) return ha < hb ? Sign::Negative : Sign::Positive;
+    return rational_sign(bx * ay - by * ax);  // negative cross(a, b): a comes first
+}
+
+TEST(Orient2d, ConventionCounterclockwiseIsPositive) {
+    EXPECT_EQ(dcel::orient2d({0, 0}, {1, 0}, {0, 1}), Sign::Positive);
+    EXPECT_EQ(dcel::orient2d({0, 0}, {0, 1}, {1, 0}), Sign::Negative);
+    EXPECT_EQ(dcel::orient2d({0, 0}, {1, 1}, {2, 2}), Sign::Zero);
+}
+
+TEST(Orient2d, OracleItselfIsRight) {
+    // Guard the oracle: a hand-computed determinant. (1,0)-(0,0) x (0,1)-(0,0) = 1.
+    EXPECT_EQ(oracle_orient({0, 0}, {1, 0}, {0, 1}), Sign::Positive);
+    EXPECT_EQ(exact(0.1) * 10 == 1, false);  // 0.1 is not exactly a tenth: the oracle sees the double
+    EXPECT_EQ(exact(0x1p-1074) * Rational(boost::multiprecision::cpp_int(1) << 1074), 1);
+}
+
+// Doubles of every kind: integers, fractions, huge, tiny, subnormal, signed zero.
+double interesting_double(std::mt19937_64& rng) {
+    std::uniform_int_distribution<int> kind(0, 9);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    std::uniform_int_distribution<int> small(-8, 8);
+    switch (kind(rng)) {
+        case 0: return small(rng);
+        case 1: return unit(rng);
+        case 2: return std::ldexp(unit(rng), std::uniform_int_distribution<int>(-1074, 1023)(rng));
+        case 3: return std::ldexp(unit(rng), -1060);  // subnormal
+        case 4: return unit(rng) < 0 ? -0.0 : 0.0;
+        case 5: return 1e15 + small(rng);
+        case 6: return std::ldexp(unit(rng), 1023);
+        case 7: return std::ldexp(unit(rng), -300);
+        case 8: return std::ldexp(1.0 + small(rng) * DBL_EPSILON, 0);
+        default: return std::ldexp(unit(rng), std::uniform_int_distribution<int>(-60, 60)(rng));
+    }
+}
+
+Point interesting_point(std::mt19937_64& rng) { return {interesting_double(rng), interesting_double(rng)}; }
+
+TEST(Orient2d, AgreesWithRationalsOnRandomTriples) {
+    std::mt19937_64 rng(20261121);
+    for (int i = 0; i < 40000; ++i) {
+        const Point a = interesting_point(rng), b = interesting_point(rng), c = interesting_point(rng);
+        ASSERT_EQ(dcel::orient2d(a, b, c), oracle_orient(a, b, c))
+            << "a=(" << a.x << "," << a.y << ") b=(" << b.x << "," << b.y << ") c=(" << c.x << "," << c.y << ")";
+    }
+}
+
+// Points on or next to a line: c = a + t (b - a) computed exactly where the
+// arithmetic allows, then nudged by a few ulps. Most are within a hair of
+// collinear, which is where a filter alone would guess.
+TEST(Orient2d, AgreesWithRationalsNearCollinear) {
+    std::mt19937_64 rng(7);
+    std::uniform_int_distribution<int> nudge(-2, 2);
+    std::uniform_int_distribution<int> scale_exp(-1000, 1000);
+    int zeros = 0;
+    for (int i = 0; i < 40000; ++i) {
+        const double s = std::ldexp(1.0, scale_exp(rng) / 2);
+        const Point a{std::uniform_int_distribution<int>(-100, 100)(rng) * s,
+                      std::uniform_int_distribution<int>(-100, 100)(rng) * s};
+        const Point d{std::uniform_int_distribution<int>(-100, 100)(rng) * s,
+                      std::uniform_int_distribution<int>(-100, 100)(rng) * s};
+        const int t = std::uniform_int_distribution<int>(-5, 5)(rng);
+        Point c{a.x + t * d.x, a.y + t * d.y};
+        const Point b{a.x + d.x, a.y + d.y};
+        for (int k = nudge(rng); k != 0; k += k > 0 ? -1 : 1) c.x = std::nextafter(c.x, k > 0 ? INFINITY : -INFINITY);
+        const Sign expected = oracle_orient(a, b, c);
+        zeros += expected == Sign::Zero;
+        ASSERT_EQ(dcel::orient2d(a, b, c), expected) << i;
+        ASSERT_EQ(dcel::orient2d_exact(a, b, c), expected) << i;
+    }
+    EXPECT_GT(zeros, 5000);  // the test really exercises collinear triples
+}
+
+TEST(Orient2d, AdversarialCases) {
+    const double big = 1e15;
+    // Coordinates near 1e15 differing by one.
+    EXPECT_EQ(dcel::orient2d({big, big}, {big + 1, big + 1}, {big + 2, big + 2}), Sign::Zero);
+    EXPECT_EQ(dcel::orient2d({big, big}, {big + 1, big + 1}, {big + 2, big + 3}), Sign::Positive);
+    // Magnitudes near 1e-300 and subnormals: products underflow in doubles.
+    const double t = 1e-300;
+    EXPECT_EQ(dcel::orient2d({0, 0}, {t, 0}, {0, t}), Sign::Positive);
+    EXPECT_EQ(dcel::orient2d({0, 0}, {t, t}, {2 * t, 2 * t}), Sign::Zero);
+    const double sub = 0x1p-1074;
+    EXPECT_EQ(dcel::orient2d({0, 0}, {sub, 0}, {0, sub}), Sign::Positive);
+    EXPECT_EQ(dcel::orient2d({0, 0}, {sub, sub}, {3 * sub, 3 * sub}), Sign::Zero);
+    EXPECT_EQ(dcel::orient2d({0, 0}, {sub, sub}, {3 * sub, 2 * sub}), Sign::Negative);
+    // -0.0 and 0.0 are the same number.
+    EXPECT_EQ(dcel::orient2d({-0.0, 0.0}, {1, -0.0}, {2, 0.0}), Sign::Zero);
+    // Differences that overflow: coordinates near DBL_MAX of both signs.
+    const double m = DBL_MAX;
+    EXPECT_EQ(dcel::orient2d({-m, -m}, {m, m}, {0, 0}), Sign::Zero);
+    EXPECT_EQ(dcel::orient2d({-m, -m}, {m, m}, {0, std::nextafter(0.0, 1.0)}), Sign::Positive);
+    EXPECT_EQ(dcel::orient2d({-m, m}, {m, -m}, {m, m}), Sign::Positive);
+    for (const auto& [a, b, c] : std::vector<std::tuple<Point, Point, Point>>{
+             {{-m, -m}, {m, m}, {0, 0}},
+             {{0.5, 0.5}, {12, 12}, {24, 24}},
+             {{big, big + 1}, {big + 1, big + 2}, {0, 0}},
+         }) {
+        EXPECT_EQ(dcel::orient2d(a, b, c), oracle_orient(a, b, c));
+    }
+}
+
+TEST(Orient2d, SymmetriesHold) {
+    std::mt19937_64 rng(99);
+    for (int i = 0; i < 10000; ++i) {
+        const Point a = interesting_point(rng), b = interesting_point(rng), c = interesting_point(rng);
+        const Sign s = dcel::orient2d(a, b, c);
+        ASSERT_EQ(dcel::orient2d(b, c, a), s);
+        ASSERT_EQ(dcel::orient2d(c, a, b), s);
+        ASSERT_EQ(dcel::orient2d(b, a, c), -s);
+    }
+}
+
+TEST(CompareAngle, DirectionsCloserThan1e16Radians) {
+    // (1e15, 1e15+1) and (1e15+1, 1e15+2) from the origin differ by about
+    // 5e-31 rad: atan2 gives both the same angle.
+    const Point o{0, 0};
+    const Point a{1e15, 1e15 + 1};
+    const Point b{1e15 + 1, 1e15 + 2};
+    EXPECT_EQ(std::atan2(a.y, a.x), std::atan2(b.y, b.x));  // why atan2 is not enough
+    EXPECT_EQ(dcel::compare_angle(o, a, b), oracle_compare_angle(o, a, b));
+    EXPECT_NE(dcel::compare_angle(o, a, b), Sign::Zero);
+    EXPECT_EQ(dcel::compare_angle(o, b, a), -dcel::compare_angle(o, a, b));
+}
+
+TEST(CompareAngle, HalfPlaneBoundaries) {
+    const Point o{0, 0};
+    // East is first, then north, west, south; just below east is last.
+    const std::vector<Point> ccw = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+    for (std::size_t i = 0; i < ccw.size(); ++i) {
+        for (std::size_t j = 0; j < ccw.size(); ++j) {
+            const Sign expected = i < j ? Sign::Negative : (i > j ? Sign::Positive : Sign::Zero);
+            EXPECT_EQ(dcel::compare_angle(o, ccw[i], ccw[j]), expected) << i << " " << j;
+        }
+    }
+    EXPECT_EQ(dcel::compare_angle(o, {-0.0, 1}, {0.0, 2}), Sign::Zero);
+    EXPECT_EQ(dcel::compare_angle(o, {1, -0.0}, {2, 0.0}), Sign::Zero);
+}
+
+TEST(CompareAngle, AgreesWithRationals) {
+    std::mt19937_64 rng(5);
+    for (int i = 0; i < 30000; ++i) {
+        const Point c = interesting_point(rng), a = interesting_point(rng), b = interesting_point(rng);
+        if (a == c || b == c) continue;
+        ASSERT_EQ(dcel::compare_angle(c, a, b), oracle_compare_angle(c, a, b));
+    }
+}
+
+TEST(ExactSum, MatchesRationalsAndRoundsCorrectly) {
+    std::mt19937_64 rng(11);
+    for (int i = 0; i < 3000; ++i) {
+        dcel::ExactSum sum;
+        Rational expected = 0;
+        const int terms = std::uniform_int_distribution<int>(1, 12)(rng);
+        for (int k = 0; k < terms; ++k) {
+            const double a = interesting_double(rng), b = interesting_double(rng);
+            if (k % 2 == 0) {
+                sum.add_product(a, b);
+                expected += exact(a) * exact(b);
+            } else {
+                sum.subtract_product(a, b);
+                expected -= exact(a) * exact(b);
+            }
+        }
+        ASSERT_EQ(sum.sign(), rational_sign(expected));
+        // Correct rounding: no double is strictly closer to the exact sum.
+        const double r = sum.to_double();
+        if (std::isinf(r) || r == 0 || std::fabs(r) < DBL_MIN) continue;  // overflow / subnormal results
+        const Rational err = abs(expected - exact(r));
+        ASSERT_LE(err, abs(expected - exact(std::nextafter(r, INFINITY))));
+        ASSERT_LE(err, abs(expected - exact(std::nextafter(r, -INFINITY))));
+    }
+}
+
+TEST(ExactSum, CancelsExactly) {
+    dcel::ExactSum s;
+    s.add_product(DBL_MAX, DBL_MAX);
+    s.add_product(0x1p-1074, 0x1p-1074);
+    s.subtract_product(DBL_MAX, DBL_MAX);
+    EXPECT_EQ(s.sign(), Sign::Positive);  // 2^-2148 survives next to 2^2048
+    s.subtract_product(0x1p-1074, 0x1p-1074);
+    EXPECT_EQ(s.sign(), Sign::Zero);
+    EXPECT_EQ(s.to_double(), 0.0);
+}
+
+Sign oracle_area_sign(const std::vector<Point>& poly) {
+    Rational twice = 0;
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+        const Point a = poly[i], b = poly[(i + 1) % poly.size()];
+        twice += exact(a.x) * exact(b.y) - exact(a.y) * exact(b.x);
+    }
+    return rational_sign(twice);
+}
+
+TEST(PolygonArea, SignAgreesWithRationals) {
+    std::mt19937_64 rng(3);
+    for (int i = 0; i < 5000; ++i) {
+        std::vector<Point> poly;
+        const int n = std::uniform_int_distribution<int>(2, 9)(rng);
+        const bool near_degenerate = i % 2 == 0;
+        for (int k = 0; k < n; ++k) {
+            if (near_degenerate) {
+                const double t = std::uniform_int_distribution<int>(-3, 3)(rng);
+                poly.push_back({1e15 + t, 1e15 + 2 * t + (k == 0 ? std::uniform_int_distribution<int>(-1, 1)(rng) : 0)});
+            } else {
+                poly.push_back(interesting_point(rng));
+            }
+        }
+        auto visit = [&](auto&& f) {
+            for (std::size_t k = 0; k < poly.size(); ++k) f(poly[k], poly[(k + 1) % poly.size()]);
+        };
+        ASSERT_EQ(dcel::polygon_area_sign(visit), oracle_area_sign(poly)) << i;
+    }
+}
+
+// Contact by brute force in rationals: solve for the intersection parameters.
+dcel::Contact oracle_contact(Point a, Point b, Point c, Point d) {
+    using dcel::Contact;
+    const Rational ax = exact(a.x), ay = exact(a.y), bx = exact(b.x), by = exact(b.y);
+    const Rational cx = exact(c.x), cy = exact(c.y), dx = exact(d.x), dy = exact(d.y);
+    const Rational rx = bx - ax, ry = by - ay, sx = dx - cx, sy = dy - cy;
+    const Rational denom = rx * sy - ry * sx;
+    const Rational qpx = cx - ax, qpy = cy - ay;
+    if (denom == 0) {
+        if (qpx * ry - qpy * rx != 0) return Contact::None;  // parallel, apart
+        // Collinear: project on r; parameters of c and d along a->b.
+        const Rational rr = rx * rx + ry * ry;
+        Rational t0 = (qpx * rx + qpy * ry) / rr;
+        Rational t1 = ((dx - ax) * rx + (dy - ay) * ry) / rr;
+        if (t0 > t1) std::swap(t0, t1);
+        const Rational lo = t0 > 0 ? t0 : Rational(0);
+        const Rational hi = t1 < 1 ? t1 : Rational(1);
+        if (lo > hi) return Contact::None;
+        return lo == hi ? Contact::SharedEndpoint : Contact::Overlap;
+    }
+    const Rational t = (qpx * sy - qpy * sx) / denom;  // along a->b
+    const Rational u = (qpx * ry - qpy * rx) / denom;  // along c->d
+    if (t < 0 || t > 1 || u < 0 || u > 1) return Contact::None;
+    const bool t_end = t == 0 || t == 1;
+    const bool u_end = u == 0 || u == 1;
+    if (t_end && u_end) return Contact::SharedEndpoint;
+    if (t_end || u_end) return Contact::Touch;
+    return Contact::Crossing;
+}
+
+TEST(SegmentContact, AgreesWithRationalBruteForce) {
+    std::mt19937_64 rng(17);
+    std::uniform_int_distribution<int> coord(0, 4);  // a tiny grid: many degenerate contacts
+    int counts[5] = {};
+    for (int i = 0; i < 60000; ++i) {
+        auto p = [&] { return Point{static_cast<double>(coord(rng)), static_cast<double>(coord(rng))}; };
+        const Point a = p(), b = p(), c = p(), d = p();
+        if (a == b || c == d) continue;
+        const dcel::Contact expected = oracle_contact(a, b, c, d);
+        ++counts[static_cast<int>(expected)];
+        ASSERT_EQ(dcel::segment_contact(a, b, c, d), expected)
+            << "(" << a.x << "," << a.y << ")-(" << b.x << "," << b.y << ") vs (" << c.x << "," << c.y << ")-(" << d.x
+            << "," << d.y << ")";
+    }
+    for (const int n : counts) EXPECT_GT(n, 100);  // every kind of contact occurred
+}
+
+}  // namespace
