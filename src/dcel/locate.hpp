@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <ostream>
 #include <vector>
 
 #include "dcel/dcel.hpp"
@@ -32,6 +33,15 @@ struct Location {
     [[nodiscard]] static Location on_edge(EdgeId e) { return {Kind::Edge, {}, e, {}}; }
     [[nodiscard]] static Location at_vertex(VertexId v) { return {Kind::Vertex, {}, {}, v}; }
     friend bool operator==(const Location&, const Location&) = default;
+    // "in f2", "on e6", "at v1"
+    friend std::ostream& operator<<(std::ostream& os, const Location& l) {
+        switch (l.kind) {
+            case Kind::Face: return os << "in " << l.face;
+            case Kind::Edge: return os << "on " << l.edge;
+            case Kind::Vertex: return os << "at " << l.vertex;
+        }
+        return os;
+    }
 };
 
 // O(V + E): compares p with every vertex and edge, then finds the face whose

@@ -13,6 +13,7 @@
 // O(1) trapezoids in expectation, so this keeps the O(E log E) expected
 // construction and removes the most error-prone bookkeeping of the method.
 #include <algorithm>
+#include <cassert>
 #include <numeric>
 
 #include "dcel/geometry/predicates.hpp"
@@ -114,7 +115,11 @@ void PointLocator::insert(Index s) {
     std::vector<Index> crossed{find_along(s, seg.left)};
     while (!trapezoids_[crossed.back()].rightp.is_null() &&
            lex_less(point(trapezoids_[crossed.back()].rightp), point(seg.right))) {
-        crossed.push_back(find_along(s, trapezoids_[crossed.back()].rightp));
+        const VertexId wall = trapezoids_[crossed.back()].rightp;
+        crossed.push_back(find_along(s, wall));
+        // The wall reaches the segment, so the next trapezoid starts at it:
+        // the walk always moves right.
+        assert(trapezoids_[crossed.back()].leftp == wall);
     }
     const std::size_t k = crossed.size() - 1;
     const Trapezoid first = trapezoids_[crossed[0]];
