@@ -9,7 +9,6 @@
 
 #include "dcel/dump.hpp"
 #include "edit_steps.hpp"
-#include "support/edit_helpers.hpp"
 #include "support/rebuild_compare.hpp"
 
 namespace dcel::props {

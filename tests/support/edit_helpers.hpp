@@ -39,11 +39,6 @@ inline HalfEdgeId half_edge(const Dcel& d, Index u, Index v) {
     return {};
 }
 
-inline bool same_dump(const DcelDump& a, const DcelDump& b) {
-    return a.vertices == b.vertices && a.vertex_out == b.vertex_out && a.half_edges == b.half_edges &&
-           a.faces == b.faces;
-}
-
 }  // namespace dcel::testing
 
 // validate() passes and the DCEL equals the rebuild of its graph.

@@ -16,6 +16,7 @@
 
 #include "dcel/build.hpp"
 #include "dcel/dcel.hpp"
+#include "dcel/dump.hpp"
 #include "dcel/error.hpp"
 #include "dcel/to_graph.hpp"
 #include "dcel/validate.hpp"
@@ -93,6 +94,12 @@ inline std::optional<std::string> difference_from_rebuild(const Dcel& d) {
         if (iso_d != iso_r) return "the isolated vertices of " + f.str() + " differ from those of rebuilt " + g.str();
     }
     return std::nullopt;
+}
+
+// Every array equal: what a refused edit must leave behind.
+inline bool same_dump(const DcelDump& a, const DcelDump& b) {
+    return a.vertices == b.vertices && a.vertex_out == b.vertex_out && a.half_edges == b.half_edges &&
+           a.faces == b.faces;
 }
 
 // Everything an edited DCEL must satisfy: validate() accepts it, and it is
