@@ -43,6 +43,14 @@ private:
     [[nodiscard]] VertexId target(HalfEdgeId h) const { return d_.target(h); }
     [[nodiscard]] Point point(VertexId v) const { return d_.point(v); }
     [[nodiscard]] FaceRecord& record(FaceId f) { return d_.faces_[f.index()]; }
+    [[nodiscard]] std::size_t degree(VertexId v) const {
+        std::size_t n = 0;
+        if (!d_.out(v).is_null()) {
+            for ([[maybe_unused]] const HalfEdgeId h : d_.around_origin_cw(d_.out(v))) ++n;
+        }
+        return n;
+    }
+    [[nodiscard]] static std::string edges_text(std::size_t n) { return std::to_string(n) + (n == 1 ? " edge" : " edges"); }
     // next(a) = b and prev(b) = a, always together (pmp's set_next_halfedge).
     void link(HalfEdgeId a, HalfEdgeId b) {
         d_.next_[a.index()] = b;
@@ -470,11 +478,8 @@ Change DcelEditor::remove_edge(EdgeId e) {
 Change DcelEditor::remove_isolated_vertex(VertexId v) {
     constexpr std::string_view kEdit = "remove_isolated_vertex";
     detail::require_vertex(d_, v, kEdit);
-    if (!d_.out(v).is_null()) {
-        std::size_t degree = 0;
-        for ([[maybe_unused]] const HalfEdgeId h : d_.around_origin_cw(d_.out(v))) ++degree;
-        detail::refuse(kEdit, detail::describe(d_, v) + " has " + std::to_string(degree) +
-                                  (degree == 1 ? " edge" : " edges") + "; remove them first (remove_edge)");
+    if (const std::size_t n = degree(v); n != 0) {
+        detail::refuse(kEdit, detail::describe(d_, v) + " has " + edges_text(n) + "; remove them first (remove_edge)");
     }
     erase_isolated(face_of_isolated_vertex(d_, v), v);
     Change c;
@@ -486,13 +491,8 @@ Change DcelEditor::remove_isolated_vertex(VertexId v) {
 Change DcelEditor::merge_collinear_edges(VertexId v) {
     constexpr std::string_view kEdit = "merge_collinear_edges";
     detail::require_vertex(d_, v, kEdit);
-    std::size_t degree = 0;
-    if (!d_.out(v).is_null()) {
-        for ([[maybe_unused]] const HalfEdgeId h : d_.around_origin_cw(d_.out(v))) ++degree;
-    }
-    if (degree != 2) {
-        detail::refuse(kEdit, detail::describe(d_, v) + " has " + std::to_string(degree) +
-                                  (degree == 1 ? " edge" : " edges") + "; merging needs exactly two");
+    if (const std::size_t n = degree(v); n != 2) {
+        detail::refuse(kEdit, detail::describe(d_, v) + " has " + edges_text(n) + "; merging needs exactly two");
     }
     const HalfEdgeId h1 = d_.out(v);
     const HalfEdgeId h2 = next(twin(h1));

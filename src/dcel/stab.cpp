@@ -1,9 +1,9 @@
 #include "dcel/stab.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <optional>
 
+#include "dcel/edit_checks.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/line_order.hpp"
@@ -144,13 +144,6 @@ private:
     std::vector<StabPiece> out_;
 };
 
-void require_finite(Point p, const char* what) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-        throw InvalidInput(InputErrorKind::BadCoordinate,
-                           std::string(what) + " " + format_point(p) + " has a coordinate that is not finite");
-    }
-}
-
 std::vector<StabPiece> reversed_tail(std::vector<StabPiece> v) {
     std::reverse(v.begin(), v.end());
     v.pop_back();  // the shared start piece
@@ -160,8 +153,8 @@ std::vector<StabPiece> reversed_tail(std::vector<StabPiece> v) {
 }  // namespace
 
 std::vector<StabPiece> stab_segment(const Dcel& d, Point a, Point b) {
-    require_finite(a, "stab_segment: the start");
-    require_finite(b, "stab_segment: the end");
+    detail::require_finite(a, "stab_segment");
+    detail::require_finite(b, "stab_segment");
     const Location start = locate_by_scan(d, a);
     if (a == b) {
         switch (start.kind) {
@@ -180,8 +173,8 @@ std::vector<StabPiece> stab_segment(const Dcel& d, Point a, Point b) {
 }
 
 std::vector<StabPiece> stab_line(const Dcel& d, Point a, Point b, HalfEdgeId cut) {
-    require_finite(a, "stab_line: the point");
-    require_finite(b, "stab_line: the point");
+    detail::require_finite(a, "stab_line");
+    detail::require_finite(b, "stab_line");
     if (a == b) {
         throw InvalidInput(InputErrorKind::BadCoordinate,
                            "stab_line: a line needs two different points, but both are " + format_point(a));
@@ -213,8 +206,8 @@ std::vector<StabPiece> stab_line(const Dcel& d, Point a, Point b, HalfEdgeId cut
 }
 
 std::vector<StabPiece> stab_line(const Dcel& d, Point a, Point b) {
-    require_finite(a, "stab_line: the point");
-    require_finite(b, "stab_line: the point");
+    detail::require_finite(a, "stab_line");
+    detail::require_finite(b, "stab_line");
     if (a == b) {
         throw InvalidInput(InputErrorKind::BadCoordinate,
                            "stab_line: a line needs two different points, but both are " + format_point(a));
