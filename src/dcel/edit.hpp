@@ -11,7 +11,9 @@
 //                                           subdivision (a crossing, a point
 //                                           not on the edge, ...).
 // Messages are one line and name the ids. All checks come before the first
-// change, so a refusal changes nothing.
+// change, so a refusal changes nothing. (Running out of memory part way
+// through an edit, std::bad_alloc, is not covered: the DCEL may then be
+// inconsistent.)
 //
 // Every edit returns a Change (change.hpp): the ids it added, removed and
 // renamed. Ids are stable except as a Change says: additions take the next
