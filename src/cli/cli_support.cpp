@@ -1,6 +1,8 @@
 #include "cli_support.hpp"
 
 #include <cerrno>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -26,6 +28,16 @@ std::string read_input(const std::string& path) {
 PlanarGraph load_graph(const std::string& path) {
     const std::string text = read_input(path);
     return with_source(path, [&] { return io::read_graph(text); });
+}
+
+double parse_coordinate(const std::string& text, const std::string& what) {
+    double v = 0;
+    const char* const end = text.data() + text.size();
+    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    if (ec != std::errc() || ptr != end || !std::isfinite(v)) {
+        throw UsageError(what + ": expected a finite number, found \"" + text + "\"");
+    }
+    return v;
 }
 
 void write_stdout(std::string_view text) {

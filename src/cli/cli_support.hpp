@@ -34,6 +34,10 @@ public:
 // Reads and parses a graph; InvalidInput messages get the file name in front.
 [[nodiscard]] PlanarGraph load_graph(const std::string& path);
 
+// A coordinate given on the command line: a finite number, read correctly
+// rounded. UsageError naming `what` otherwise.
+[[nodiscard]] double parse_coordinate(const std::string& text, const std::string& what);
+
 // Writes all of text to stdout (one write call for large outputs).
 void write_stdout(std::string_view text);
 

@@ -10,5 +10,8 @@ namespace dcel::cli {
 
 void add_faces_command(CLI::App& app, Action& action);
 void add_build_command(CLI::App& app, Action& action);
+void add_locate_command(CLI::App& app, Action& action);
+void add_stab_command(CLI::App& app, Action& action);
+void add_edit_command(CLI::App& app, Action& action);
 
 }  // namespace dcel::cli

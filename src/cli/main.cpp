@@ -17,6 +17,9 @@ int main(int argc, char** argv) {
     Action action;
     add_faces_command(app, action);
     add_build_command(app, action);
+    add_locate_command(app, action);
+    add_stab_command(app, action);
+    add_edit_command(app, action);
 
     try {
         app.parse(argc, argv);
@@ -27,6 +30,9 @@ int main(int argc, char** argv) {
     try {
         return action();
     } catch (const dcel::InvalidInput& e) {
+        std::fprintf(stderr, "dcel: %s\n", e.what());
+        return kExitInvalid;
+    } catch (const dcel::TopologyError& e) {  // an edit refused
         std::fprintf(stderr, "dcel: %s\n", e.what());
         return kExitInvalid;
     } catch (const UsageError& e) {
