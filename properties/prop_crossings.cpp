@@ -72,7 +72,7 @@ RC_GTEST_PROP(Crossings, prop_planted_defect_is_rejected_naming_a_real_contact, 
         const InputErrorKind expected = defect == gen::Defect::Crossing ? InputErrorKind::Crossing
                                         : defect == gen::Defect::Touch  ? InputErrorKind::VertexOnEdge
                                                                         : InputErrorKind::Overlap;
-        RC_ASSERT(e.kind() == expected);
+        RC_ASSERT(std::string(to_string(e.kind())) == to_string(expected));
     }
 }
 

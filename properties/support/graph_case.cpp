@@ -42,3 +42,17 @@ bool has_integer_coordinates(const PlanarGraph& g) {
 }
 
 }  // namespace dcel::props
+
+namespace dcel::gen {
+
+void showValue(Defect d, std::ostream& os) {
+    static const char* const kNames[] = {"crossing", "touch", "overlap"};
+    os << kNames[static_cast<int>(d)];
+}
+
+void showValue(Transform t, std::ostream& os) {
+    static const char* const kNames[] = {"translate", "rotate90", "mirror", "scale-pow2"};
+    os << kNames[static_cast<int>(t)];
+}
+
+}  // namespace dcel::gen

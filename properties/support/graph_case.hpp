@@ -35,3 +35,9 @@ void showValue(const GraphCase& c, std::ostream& os);
 [[nodiscard]] bool has_integer_coordinates(const PlanarGraph& g);
 
 }  // namespace dcel::props
+
+namespace dcel::gen {
+// Readable names in counterexamples.
+void showValue(Defect d, std::ostream& os);
+void showValue(Transform t, std::ostream& os);
+}  // namespace dcel::gen

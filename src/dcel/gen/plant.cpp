@@ -65,7 +65,12 @@ std::optional<PlanarGraph> try_attempt(const PlanarGraph& g, std::size_t e, cons
             const bool conflict = segments_conflict(p, q, pt(out.edges[j].u), pt(out.edges[j].v));
             if (conflict != (j == e)) return std::nullopt;
         }
+        // The contact must be of the kind asked for: rounding may have
+        // turned an overlap into a touch, or a crossing into a touch.
+        const bool collinear = exact_orient(pt(target.u), pt(target.v), p) == Sign::Zero &&
+                               exact_orient(pt(target.u), pt(target.v), q) == Sign::Zero;
         if (d == Defect::Crossing && !proper_crossing(p, q, pt(target.u), pt(target.v))) return std::nullopt;
+        if ((d == Defect::Overlap) != collinear) return std::nullopt;
         // Old vertices on a new edge: only e's own endpoints (an overlap may
         // run past them).
         for (Index w = 0; w < static_cast<Index>(base); ++w) {
