@@ -9,6 +9,7 @@
 #include "dcel/queries.hpp"
 #include "support/dcel_views.hpp"
 #include "support/exact_oracle.hpp"
+#include "support/face_locator.hpp"
 #include "support/graph_case.hpp"
 #include "support/union_find.hpp"
 
@@ -33,6 +34,9 @@ RC_GTEST_PROP(Areas, prop_cycle_area_signs_and_sums_are_exact, ()) {
     for (Index v = 0; v < g.vertices.size(); ++v) excess[v] += label[v] == v ? 1 : 0;
     for (const GraphEdge& e : g.edges) excess[label[e.u.index()]] += 1;
 
+    // Top-level components, found geometrically: no bounded face of another
+    // component contains them. Their outer boundaries enclose all the area.
+    const FaceLocator locate(d, label);
     Rational all_cycles = 0, bounded_faces = 0, top_level_enclosed = 0;
     for (Index i = 0; i < d.num_faces(); ++i) {
         const FaceId f(i);
@@ -47,7 +51,8 @@ RC_GTEST_PROP(Areas, prop_cycle_area_signs_and_sums_are_exact, ()) {
             const bool encloses = excess[label[d.origin(h).index()]] > 0;
             RC_ASSERT((encloses ? hole < 0 : hole == 0));  // a hole is clockwise, flat for a tree
             face += hole;
-            if (d.is_unbounded(f)) top_level_enclosed -= hole;
+            const VertexId v = d.origin(h);
+            if (locate.face_containing(d.point(v), label[v.index()]) == Dcel::kUnboundedFace) top_level_enclosed -= hole;
         }
         all_cycles += face;
         if (!d.is_unbounded(f)) {

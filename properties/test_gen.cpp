@@ -124,6 +124,25 @@ TEST(Plant, EachDefectIsRejectedWithItsKind) {
     EXPECT_EQ(plant(PlanarGraph{{{0, 0}}, {}}, Defect::Crossing, 1), std::nullopt);  // no edge to cross
 }
 
+TEST(Plant, OverlapStaysOnTheLineWithNearDegenerateCoordinates) {
+    // Regression (found by Crossings.prop_planted_defect_...): here the point
+    // past the end of edge 1 rounds off its line, so the attempt made a touch
+    // (vertex-on-edge) where an overlap was asked for.
+    const PlanarGraph g{{{1.2791052533825409e+29, 6897321058801102}, {1.2791052533825414e+29, 0},
+                         {1.279105253382541e+29, 6897321058801113}, {1.2791052533825404e+29, 6897321058801111},
+                         {1.2791052533825407e+29, 6897321058801112}, {1.2791052533825398e+29, 6897321058801120}},
+                        {{VertexId(5), VertexId(3)}, {VertexId(0), VertexId(3)}, {VertexId(4), VertexId(3)},
+                         {VertexId(4), VertexId(2)}, {VertexId(2), VertexId(1)}}};
+    const std::optional<PlanarGraph> bad = plant(g, Defect::Overlap, 401);
+    ASSERT_TRUE(bad.has_value());
+    try {
+        (void)build(*bad);
+        ADD_FAILURE() << "accepted a planted overlap";
+    } catch (const InvalidInput& e) {
+        EXPECT_EQ(e.kind(), InputErrorKind::Overlap) << e.what();
+    }
+}
+
 TEST(Shrink, ReachesTheSmallestGraphWithTheProperty) {
     const PlanarGraph big = generate({Family::Triangulation, 7, 60});
     ASSERT_GT(build(big).num_faces(), 1u);
