@@ -1,7 +1,8 @@
 // RapidCheck generators of points and point triples for the predicate
 // properties: random, and adversarial (exactly or nearly collinear, large
 // offsets with tiny differences, tiny magnitudes and subnormals, -0.0,
-// values near DBL_MAX whose differences overflow).
+// values near DBL_MAX whose differences overflow, Kettner et al.'s points
+// near a diagonal).
 #pragma once
 
 #include <rapidcheck.h>
