@@ -8,6 +8,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include "support/exact_oracle.hpp"
+#include "support/face_shapes.hpp"
 
 namespace dcel::props {
 namespace {
@@ -48,14 +49,7 @@ struct FaceCounter : boost::planar_face_traversal_visitor {
 
 }  // namespace
 
-VertexCycle canonical_cycle(VertexCycle c) {
-    VertexCycle best = c;
-    for (std::size_t k = 1; k < c.size(); ++k) {
-        std::rotate(c.begin(), c.begin() + 1, c.end());
-        best = std::min(best, c);
-    }
-    return best;
-}
+VertexCycle canonical_cycle(VertexCycle c) { return testing::canonical(std::move(c)); }
 
 std::vector<VertexCycle> boost_face_cycles(const PlanarGraph& g) {
     BoostGraph b = to_boost(g);
