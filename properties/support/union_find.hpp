@@ -1,0 +1,42 @@
+// Union-find over vertex ids: the properties' own count of connected
+// components (isolated vertices included), independent of build().
+#pragma once
+
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+#include "dcel/graph.hpp"
+
+namespace dcel::props {
+
+class UnionFind {
+public:
+    explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), Index{0}); }
+    Index find(Index x) {
+        while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+        return x;
+    }
+    void unite(Index a, Index b) { parent_[find(a)] = find(b); }
+
+private:
+    std::vector<Index> parent_;
+};
+
+// The component label (a root vertex id) of every vertex.
+[[nodiscard]] inline std::vector<Index> component_labels(const PlanarGraph& g) {
+    UnionFind uf(g.vertices.size());
+    for (const GraphEdge& e : g.edges) uf.unite(e.u.index(), e.v.index());
+    std::vector<Index> label(g.vertices.size());
+    for (Index v = 0; v < label.size(); ++v) label[v] = uf.find(v);
+    return label;
+}
+
+[[nodiscard]] inline std::size_t count_components_by_union_find(const PlanarGraph& g) {
+    const std::vector<Index> label = component_labels(g);
+    std::size_t roots = 0;
+    for (Index v = 0; v < label.size(); ++v) roots += label[v] == v;
+    return roots;
+}
+
+}  // namespace dcel::props
