@@ -6,7 +6,8 @@
 // byte string is a valid input: words are runs of letters and '_', numbers
 // are whatever std::from_chars reads as a double at a digit, '-' or '.'
 // (so 1e15, -0, 5e-324 and 0x-free decimals all work; "inf" and "nan" are
-// numbers too), and every other byte separates tokens. A mutation that
+// numbers too), '#' starts a comment that runs to the end of the line, and
+// every other byte separates tokens. A mutation that
 // breaks a number merely splits or drops it, so the fuzzer keeps making
 // meaningful inputs. At the end, next() keeps returning an End token.
 #pragma once
@@ -57,6 +58,10 @@ private:
     void advance() {
         while (pos_ < text_.size()) {
             const char c = text_[pos_];
+            if (c == '#') {
+                while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+                continue;
+            }
             if (is_letter(c)) {
                 const std::size_t begin = pos_;
                 while (pos_ < text_.size() && is_letter(text_[pos_])) ++pos_;
