@@ -10,10 +10,7 @@ namespace dcel::fuzz {
 namespace {
 
 // The command's target: an element that exists, whatever the number.
-Index target(double v, std::size_t count) {
-    if (!std::isfinite(v) || std::fabs(v) > 1e18) return 0;
-    return static_cast<Index>(static_cast<std::uint64_t>(std::llabs(static_cast<long long>(v))) % count);
-}
+Index target(double v, std::size_t count) { return static_cast<Index>(wrap_index(v, count)); }
 
 // The value written: any id, in range or not; negative (or not an id) is null.
 Index value(double v) {

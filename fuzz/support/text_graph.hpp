@@ -1,13 +1,15 @@
 // Decodes a planar straight-line graph (not necessarily a valid one) from
 // readable fuzz text:
 //
-//   [scale S] [offset X Y] [points] x y, x y, ...  edges u v, u v, ...
+//   [scale S] [offset X Y] [points] x y, x y, ..., on i j t, ...  edges u v, ...
 //
 // Numbers before "edges" pair up into points, numbers after it into index
 // pairs (a leftover odd number is dropped). Each point is (X + x*S, Y + y*S)
 // in double arithmetic, so "offset 1e15 1e15" with small integers gives
 // near-degenerate coordinates, "scale 5e-324" subnormals, and "nan"/"inf"
-// bad coordinates. An index that is not an integer in [0, 2^32 - 2] becomes
+// bad coordinates. "on i j t" adds the point p_i + t (p_j - p_i), rounded:
+// within rounding of the line through p_i and p_j (i and j modulo the points
+// so far), which is where exact and floating-point orientation disagree. An index that is not an integer in [0, 2^32 - 2] becomes
 // the null id, which build() rejects like any out-of-range index. Decoding
 // stops at the first other word, which is left in the reader for the
 // harness (check reads its corruption commands from there).
@@ -51,6 +53,18 @@ inline PlanarGraph decode_graph(TokenReader& in, GraphCaps caps) {
             } else if (t.is_word("scale")) {
                 in.next();
                 scale = in.number_or(scale);
+                continue;
+            } else if (t.is_word("on")) {
+                in.next();
+                const double i = in.number_or(0);
+                const double j = in.number_or(0);
+                const double along = in.number_or(0.5);
+                if (!edges && !g.vertices.empty() && g.vertices.size() < caps.vertices) {
+                    const Point a = g.vertices[wrap_index(i, g.vertices.size())];
+                    const Point b = g.vertices[wrap_index(j, g.vertices.size())];
+                    g.vertices.push_back({a.x + along * (b.x - a.x), a.y + along * (b.y - a.y)});
+                }
+                have_half = false;
                 continue;
             } else if (t.is_word("offset")) {
                 in.next();

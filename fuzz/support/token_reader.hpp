@@ -13,8 +13,10 @@
 #pragma once
 
 #include <charconv>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <string_view>
 
@@ -28,6 +30,13 @@ struct Token {
 
     [[nodiscard]] bool is_word(std::string_view w) const { return kind == Kind::Word && word == w; }
 };
+
+// A number read from the input as an index into n > 0 elements, whatever the
+// number is (negative, fractional, huge, NaN): commands always land.
+inline std::size_t wrap_index(double v, std::size_t n) {
+    if (!std::isfinite(v) || std::fabs(v) > 1e18) return 0;
+    return static_cast<std::size_t>(std::llabs(static_cast<long long>(v))) % n;
+}
 
 class TokenReader {
 public:
