@@ -22,6 +22,7 @@ for bin in "$build"/bin/*_fuzzer; do
   name=${target%_fuzzer}
   cp "$bin" "$OUT/"
   rm -f "$OUT/${target}_seed_corpus.zip"
-  (cd "$src/corpus/$name" && find . -type f -print | zip -q -j "$OUT/${target}_seed_corpus.zip" -@)
+  # Seeds and regressions; not grown/, a local campaign's uncommitted corpus.
+  (cd "$src/corpus/$name" && find . -path ./grown -prune -o -type f -print | zip -q -j "$OUT/${target}_seed_corpus.zip" -@)
   if [ -f "$src/fuzz/$name.dict" ]; then cp "$src/fuzz/$name.dict" "$OUT/$target.dict"; fi
 done
