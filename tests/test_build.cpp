@@ -74,6 +74,16 @@ TEST(Build, IsolatedVertices) {
     expect_faces(graph({{0, 0}, {1, 5}}, {}), {{{}, {}, {0, 1}}});
 }
 
+// Regression (found by fuzz/nonplanar under UBSan): sorting the rings formed
+// first + 1 on an empty ring, undefined behaviour when the graph has no edges
+// (a null iterator) or when the last vertex has none (past the end). Only a
+// sanitizer build sees it; corpus/nonplanar/regressions/ replays it there.
+TEST(Build, VerticesWithoutEdgesFirstAndLast) {
+    expect_faces(graph({{0, 0}}, {}), {{{}, {}, {0}}});
+    // Edge 0-1 is a hole of the unbounded face (one 2-cycle); 2 is isolated there.
+    expect_faces(graph({{0, 0}, {2, 0}, {5, 5}}, {{0, 1}}), {{{}, {{0, 1}}, {2}}});
+}
+
 TEST(Build, LoneEdgeIsOneTwoCycle) {
     // next(0->1) = 1->0 and next(1->0) = 0->1: one cycle [0, 1], a hole of the unbounded face.
     expect_faces(graph({{0, 0}, {1, 1}}, {{0, 1}}), {{{}, {{0, 1}}, {}}});

@@ -118,11 +118,12 @@ Rings sort_rings_checked(const PlanarGraph& g) {
             const Sign s = compare_angle(c, direction(a), direction(b));
             return s == Sign::Zero ? a < b : s == Sign::Negative;
         });
-        for (auto it = first; it + 1 < last; ++it) {
-            if (compare_angle(c, direction(*it), direction(*(it + 1))) == Sign::Zero) {
-                throw_same_direction(g, VertexId(v), *it, *(it + 1));
-            }
-        }
+        // adjacent_find never forms first + 1 on an empty ring (a null
+        // pointer when the graph has no edges: undefined behaviour).
+        const auto same = std::adjacent_find(first, last, [&](HalfEdgeId a, HalfEdgeId b) {
+            return compare_angle(c, direction(a), direction(b)) == Sign::Zero;
+        });
+        if (same != last) throw_same_direction(g, VertexId(v), *same, *(same + 1));
     }
     return r;
 }

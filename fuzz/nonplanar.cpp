@@ -1,0 +1,98 @@
+// nonplanar: arbitrary segments, where crossings, touches and overlaps are
+// likely, through build().
+//
+// Compares build()'s verdict with a brute-force exact check of every pair of
+// elements (support/brute_force.hpp): build() rejects exactly when brute
+// force finds a defect, and the kind it reports is one brute force found.
+// Compares an accepted graph's DCEL with an independent reference
+// (support/reference_dcel.hpp), and requires validate() to pass it. Compares
+// with Boost's Boyer-Myrvold test: a graph Boost calls non-planar must be
+// rejected. build() without the crossing check must terminate without
+// memory errors on any input, and equal the checked build on a valid one.
+//
+// Input: readable text, see support/text_graph.hpp, e.g.
+//   points 0 0, 4 4, 0 4, 4 0  edges 0 1, 2 3
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "dcel/build.hpp"
+#include "dcel/dump.hpp"
+#include "dcel/error.hpp"
+#include "dcel/validate.hpp"
+#include "support/boyer_myrvold.hpp"
+#include "support/brute_force.hpp"
+#include "support/fuzz_check.hpp"
+#include "support/reference_dcel.hpp"
+#include "support/text_graph.hpp"
+
+namespace dcel::fuzz {
+namespace {
+
+// The brute force is O(V^2 + V*E + E^2) big-integer operations and the
+// reference DCEL similar; these caps keep a run around a millisecond. Enough
+// for K5 and K3,3 (Boost) and for every local configuration of a few edges.
+constexpr std::size_t kMaxInput = 4096;
+constexpr GraphCaps kCaps{24, 40};
+
+std::vector<std::pair<Index, Index>> index_pairs(const PlanarGraph& g) {
+    std::vector<std::pair<Index, Index>> pairs;
+    for (const GraphEdge& e : g.edges) pairs.emplace_back(e.u.index(), e.v.index());
+    return pairs;
+}
+
+void check_graph(const PlanarGraph& g) {
+    const Defects defects = find_defects(g);
+    // The oracles check each other: a graph that is not planar at all has
+    // no drawing without a geometric defect among its edges.
+    if (!boost_is_planar(g.vertices.size(), index_pairs(g))) {
+        FUZZ_CHECK(has(defects, Defect::Crossing) || has(defects, Defect::Touch) || has(defects, Defect::Overlap) ||
+                       has(defects, Defect::DuplicatePoint) || has(defects, Defect::BadCoordinate),
+                   "Boost calls the graph non-planar, brute force finds only " << describe(defects));
+    }
+    Dcel d;
+    try {
+        d = build(g);
+    } catch (const InvalidInput& e) {
+        const Defect k = defect_of(e.kind());
+        FUZZ_CHECK(defects.any(), "build rejects a graph brute force finds valid: " << e.what());
+        FUZZ_CHECK(k != Defect::Count && has(defects, k),
+                   "build reports " << to_string(e.kind()) << " but brute force finds " << describe(defects) << ": "
+                                    << e.what());
+        return;
+    }
+    FUZZ_CHECK(defects.none(), "build accepts a graph with " << describe(defects));
+    FUZZ_CHECK(boost_is_planar(g.vertices.size(), index_pairs(g)), "build accepts a graph Boost calls non-planar");
+    const CheckResult v = validate(d);
+    FUZZ_CHECK(!v, "validate rejects a built DCEL: [" << to_string(v->invariant) << "] " << v->message);
+    const DcelDump dump = to_dump(d);
+    const Judgement j = judge_dump(dump);
+    FUZZ_CHECK(j.valid, "the reference disagrees with build: " << j.reason);
+
+    const DcelDump unchecked = to_dump(build(g, BuildOptions{.check_crossings = false}));
+    FUZZ_CHECK(unchecked.half_edges == dump.half_edges && unchecked.faces == dump.faces &&
+                   unchecked.vertex_out == dump.vertex_out,
+               "build without the crossing check differs on a valid graph");
+}
+
+// On input that breaks its promise, build() without the crossing check may
+// return anything or refuse, but must terminate cleanly.
+void check_unchecked_build(const PlanarGraph& g) {
+    try {
+        const Dcel d = build(g, BuildOptions{.check_crossings = false});
+        FUZZ_CHECK(d.num_half_edges() == 2 * g.edges.size(), "unchecked build lost half-edges");
+    } catch (const InvalidInput&) {
+    }
+}
+
+}  // namespace
+}  // namespace dcel::fuzz
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size > dcel::fuzz::kMaxInput) return -1;
+    dcel::fuzz::TokenReader in(std::string_view(reinterpret_cast<const char*>(data), size));
+    const dcel::PlanarGraph g = dcel::fuzz::decode_graph(in, dcel::fuzz::kCaps);
+    dcel::fuzz::check_graph(g);
+    dcel::fuzz::check_unchecked_build(g);
+    return 0;
+}
