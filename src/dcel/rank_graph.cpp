@@ -1,0 +1,122 @@
+#include "dcel/rank_graph.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "dcel/error.hpp"
+#include "dcel/format.hpp"
+#include "dcel/input_checks.hpp"
+#include "dcel/ring_sort.hpp"
+
+namespace dcel {
+
+void throw_same_direction(const PlanarGraph& g, VertexId v, HalfEdgeId a, HalfEdgeId b) {
+    const EdgeId lo = std::min(edge_of(a), edge_of(b));
+    const EdgeId hi = std::max(edge_of(a), edge_of(b));
+    const VertexId ta = graph_target(g, a);
+    if (ta == graph_target(g, b)) {
+        throw InvalidInput(InputErrorKind::DuplicateEdge,
+                           "edges " + std::to_string(lo.index()) + " and " + std::to_string(hi.index()) +
+                               " both join vertices " + std::to_string(std::min(v, ta).index()) + " and " +
+                               std::to_string(std::max(v, ta).index()) + "; remove one of them",
+                           {v, ta}, {lo, hi});
+    }
+    throw InvalidInput(InputErrorKind::Overlap,
+                       describe_edge(g, lo) + " and " + describe_edge(g, hi) + " overlap: both leave vertex " +
+                           std::to_string(v.index()) + " in the same direction; merge them into one chain of edges",
+                       {v}, {lo, hi});
+}
+
+RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
+    const auto n = static_cast<Index>(g.vertices.size());
+    const auto m = static_cast<Index>(g.edges.size());
+    RankGraph rg;
+    rg.vertex = std::move(lex.vertex_of_rank);
+    rg.point.resize(n);
+    for (Index r = 0; r < n; ++r) rg.point[r] = g.vertices[rg.vertex[r].index()];
+
+    // Counting sort of the half-edges by the rank of their origin: O(V + E).
+    {
+        const std::vector<Index> rank = std::move(lex.rank_of_vertex);
+        rg.offset.assign(n + 1, 0);
+        for (const GraphEdge& e : g.edges) {
+            ++rg.offset[rank[e.u.index()] + 1];
+            ++rg.offset[rank[e.v.index()] + 1];
+        }
+        for (Index r = 0; r < n; ++r) rg.offset[r + 1] += rg.offset[r];
+        rg.half_edge.resize(2 * static_cast<std::size_t>(m));
+        rg.target.resize(2 * static_cast<std::size_t>(m));
+        std::vector<Index> fill(rg.offset.begin(), rg.offset.end() - 1);
+        for (Index k = 0; k < m; ++k) {
+            const Index ru = rank[g.edges[k].u.index()];
+            const Index rv = rank[g.edges[k].v.index()];
+            const Index su = fill[ru]++;
+            rg.half_edge[su] = HalfEdgeId(2 * k);
+            rg.target[su] = rv;
+            const Index sv = fill[rv]++;
+            rg.half_edge[sv] = HalfEdgeId(2 * k + 1);
+            rg.target[sv] = ru;
+        }
+    }
+
+    // Sort each ring on a contiguous copy of its targets' points. The first
+    // same-direction pair is remembered for the smallest vertex id, so the
+    // error is the one sort_rings_checked reports.
+    std::vector<RingEntry> ring;
+    VertexId bad_vertex;
+    HalfEdgeId bad_a;
+    HalfEdgeId bad_b;
+    for (Index r = 0; r < n; ++r) {
+        const Index first = rg.offset[r];
+        const Index degree = rg.offset[r + 1] - first;
+        if (degree < 2) continue;
+        ring.resize(degree);
+        for (Index i = 0; i < degree; ++i) {
+            const Index t = rg.target[first + i];
+            ring[i] = RingEntry{rg.point[t], rg.half_edge[first + i], t, 0};
+        }
+        const Point centre = rg.point[r];
+        sort_ring(centre, ring);
+        for (Index i = 0; i < degree; ++i) {
+            rg.half_edge[first + i] = ring[i].half_edge;
+            rg.target[first + i] = ring[i].payload;
+        }
+        const std::size_t same = first_same_direction(centre, ring);
+        if (same < ring.size() && rg.vertex[r] < bad_vertex) {
+            bad_vertex = rg.vertex[r];
+            bad_a = ring[same].half_edge;
+            bad_b = ring[same + 1].half_edge;
+        }
+    }
+    if (!bad_vertex.is_null()) throw_same_direction(g, bad_vertex, bad_a, bad_b);
+    return rg;
+}
+
+RankGraph rank_graph_from_rings(const PlanarGraph& g, std::span<const VertexId> lex_order,
+                                std::span<const Index> ring_offset, std::span<const HalfEdgeId> ring) {
+    const auto n = static_cast<Index>(g.vertices.size());
+    RankGraph rg;
+    rg.vertex.assign(lex_order.begin(), lex_order.end());
+    std::vector<Index> rank(n);
+    for (Index r = 0; r < n; ++r) rank[rg.vertex[r].index()] = r;
+    rg.point.resize(n);
+    rg.offset.assign(n + 1, 0);
+    for (Index r = 0; r < n; ++r) {
+        const Index v = rg.vertex[r].index();
+        rg.point[r] = g.vertices[v];
+        rg.offset[r + 1] = rg.offset[r] + (ring_offset[v + 1] - ring_offset[v]);
+    }
+    rg.half_edge.resize(ring.size());
+    rg.target.resize(ring.size());
+    for (Index r = 0; r < n; ++r) {
+        const Index v = rg.vertex[r].index();
+        for (Index i = ring_offset[v]; i < ring_offset[v + 1]; ++i) {
+            const Index s = rg.offset[r] + (i - ring_offset[v]);
+            rg.half_edge[s] = ring[i];
+            rg.target[s] = rank[graph_target(g, ring[i]).index()];
+        }
+    }
+    return rg;
+}
+
+}  // namespace dcel
