@@ -78,9 +78,8 @@ Rings sort_rings_checked(const PlanarGraph& g) {
             ring[i] = RingEntry{g.vertices[graph_target(g, h).index()], h, 0, 0};
         }
         const Point centre = g.vertices[v];
-        sort_ring(centre, ring);
+        const std::size_t same = sort_ring(centre, ring);
         for (Index i = 0; i < degree; ++i) r.ring[first + i] = ring[i].half_edge;
-        const std::size_t same = first_same_direction(centre, ring);
         if (same < ring.size()) throw_same_direction(g, VertexId(v), ring[same].half_edge, ring[same + 1].half_edge);
     }
     return r;

@@ -1,6 +1,7 @@
 #include "dcel/rank_graph.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 
 #include "dcel/error.hpp"
@@ -27,37 +28,67 @@ void throw_same_direction(const PlanarGraph& g, VertexId v, HalfEdgeId a, HalfEd
                        {v}, {lo, hi});
 }
 
-RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
+namespace {
+
+// Groups the half-edges by the rank of their origin (offset, half_edge,
+// target), in O(V + E). A plain counting sort would scatter every half-edge
+// to a random slot when the input is in random order; instead the
+// half-edges are first partitioned into about 1024 groups of consecutive
+// ranks (1024 sequential output streams), and each group is then counted
+// and scattered within its own small range of slots.
+void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& rg) {
     const auto n = static_cast<Index>(g.vertices.size());
     const auto m = static_cast<Index>(g.edges.size());
+    unsigned shift = 0;
+    while ((static_cast<std::uint64_t>(n) >> shift) > 1024) ++shift;
+    const Index groups = (n >> shift) + 1;
+
+    struct Record {
+        Index origin;
+        Index target;
+        HalfEdgeId half_edge;
+    };
+    std::vector<Record> records(2 * static_cast<std::size_t>(m));
+    {
+        std::vector<Index> start(groups + 1, 0);
+        for (const GraphEdge& e : g.edges) {
+            ++start[(rank[e.u.index()] >> shift) + 1];
+            ++start[(rank[e.v.index()] >> shift) + 1];
+        }
+        for (Index b = 0; b < groups; ++b) start[b + 1] += start[b];
+        for (Index k = 0; k < m; ++k) {
+            const Index ru = rank[g.edges[k].u.index()];
+            const Index rv = rank[g.edges[k].v.index()];
+            records[start[ru >> shift]++] = Record{ru, rv, HalfEdgeId(2 * k)};
+            records[start[rv >> shift]++] = Record{rv, ru, HalfEdgeId(2 * k + 1)};
+        }
+    }
+    std::vector<Index>().swap(rank);
+
+    rg.offset.assign(n + 1, 0);
+    for (const Record& r : records) ++rg.offset[r.origin + 1];
+    for (Index r = 0; r < n; ++r) rg.offset[r + 1] += rg.offset[r];
+    rg.half_edge.resize(records.size());
+    rg.target.resize(records.size());
+    // Within a group, records keep their input order, as in a counting sort.
+    std::vector<Index> fill(rg.offset.begin(), rg.offset.end() - 1);
+    for (const Record& r : records) {
+        const Index s = fill[r.origin]++;
+        rg.half_edge[s] = r.half_edge;
+        rg.target[s] = r.target;
+    }
+}
+
+}  // namespace
+
+RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
+    const auto n = static_cast<Index>(g.vertices.size());
     RankGraph rg;
     rg.vertex = std::move(lex.vertex_of_rank);
     rg.point.resize(n);
     for (Index r = 0; r < n; ++r) rg.point[r] = g.vertices[rg.vertex[r].index()];
 
-    // Counting sort of the half-edges by the rank of their origin: O(V + E).
-    {
-        const std::vector<Index> rank = std::move(lex.rank_of_vertex);
-        rg.offset.assign(n + 1, 0);
-        for (const GraphEdge& e : g.edges) {
-            ++rg.offset[rank[e.u.index()] + 1];
-            ++rg.offset[rank[e.v.index()] + 1];
-        }
-        for (Index r = 0; r < n; ++r) rg.offset[r + 1] += rg.offset[r];
-        rg.half_edge.resize(2 * static_cast<std::size_t>(m));
-        rg.target.resize(2 * static_cast<std::size_t>(m));
-        std::vector<Index> fill(rg.offset.begin(), rg.offset.end() - 1);
-        for (Index k = 0; k < m; ++k) {
-            const Index ru = rank[g.edges[k].u.index()];
-            const Index rv = rank[g.edges[k].v.index()];
-            const Index su = fill[ru]++;
-            rg.half_edge[su] = HalfEdgeId(2 * k);
-            rg.target[su] = rv;
-            const Index sv = fill[rv]++;
-            rg.half_edge[sv] = HalfEdgeId(2 * k + 1);
-            rg.target[sv] = ru;
-        }
-    }
+    group_by_origin(g, std::move(lex.rank_of_vertex), rg);
 
     // Sort each ring on a contiguous copy of its targets' points. The first
     // same-direction pair is remembered for the smallest vertex id, so the
@@ -72,16 +103,19 @@ RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
         if (degree < 2) continue;
         ring.resize(degree);
         for (Index i = 0; i < degree; ++i) {
+            // Field by field: building a whole RingEntry on the stack and
+            // copying it stalls on store forwarding.
             const Index t = rg.target[first + i];
-            ring[i] = RingEntry{rg.point[t], rg.half_edge[first + i], t, 0};
+            ring[i].target = rg.point[t];
+            ring[i].half_edge = rg.half_edge[first + i];
+            ring[i].payload = t;
         }
         const Point centre = rg.point[r];
-        sort_ring(centre, ring);
+        const std::size_t same = sort_ring(centre, ring);
         for (Index i = 0; i < degree; ++i) {
             rg.half_edge[first + i] = ring[i].half_edge;
             rg.target[first + i] = ring[i].payload;
         }
-        const std::size_t same = first_same_direction(centre, ring);
         if (same < ring.size() && rg.vertex[r] < bad_vertex) {
             bad_vertex = rg.vertex[r];
             bad_a = ring[same].half_edge;

@@ -4,8 +4,11 @@
 // Each direction first gets its quadrant from coordinate comparisons
 // ([0, pi/2), [pi/2, pi), [pi, 3pi/2), [3pi/2, 2pi)); two directions in one
 // quadrant are less than pi/2 apart, so orient2d decides between them. This
-// is the order compare_angle gives, with fewer orient2d calls.
-// O(d log d) for d entries (insertion sort below 24, std::sort above).
+// is the order compare_angle gives, with fewer orient2d calls. Rings of up
+// to 24 entries are first ordered by a floating-point guess at the angle and
+// then confirmed with one orient2d per adjacent pair (an exact insertion
+// sort when the guess was wrong); larger ones go to std::sort.
+// O(d log d) for d entries.
 #pragma once
 
 #include <cstddef>
@@ -30,8 +33,9 @@ struct RingEntry {
     return p.x > centre.x ? 0 : 2;
 }
 
-// Fills each entry's quadrant and sorts. Requires every target != centre.
-void sort_ring(Point centre, std::span<RingEntry> ring);
+// Fills each entry's quadrant and sorts; returns first_same_direction of the
+// result. Requires every target != centre.
+[[nodiscard]] std::size_t sort_ring(Point centre, std::span<RingEntry> ring);
 
 // In a sorted ring: the first i with ring[i] and ring[i+1] pointing the same
 // way, or ring.size() when all directions differ. O(d).

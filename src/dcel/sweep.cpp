@@ -18,6 +18,7 @@ struct Span {
     Index left;
     Index right;
     Index start_slot;  // the slot of the half-edge left -> right
+    Index edge;        // the input edge id, for messages
 };
 
 [[noreturn]] void throw_vertex_on_edge(const PlanarGraph& g, VertexId v, EdgeId e) {
@@ -50,7 +51,8 @@ struct Span {
 class Sweep {
 public:
     Sweep(const RankGraph& rg, const PlanarGraph& g, bool check)
-        : rg_(rg), g_(g), check_(check), spans_(g.edges.size()), status_(static_cast<Index>(g.edges.size())) {}
+        : rg_(rg), g_(g), check_(check), node_of_edge_(g.edges.size(), kNoIndex), spans_(g.edges.size()),
+          status_(static_cast<Index>(g.edges.size())) {}
 
     // One event per vertex, in rank order: O(degree) list work, plus one
     // O(log n) search when no edge arrives from the left, plus O(1)
@@ -79,8 +81,9 @@ private:
         Index above = StatusList::kNone;
         bool any_ending = false;
         for (Index s = ring_begin; s < ring_end; ++s) {
-            const Index e = edge_of(rg_.half_edge[s]).index();
-            if (rg_.target[s] >= r || !status_.contains(e)) continue;
+            if (rg_.target[s] >= r) continue;
+            const Index e = node_of_edge_[edge_of(rg_.half_edge[s]).index()];
+            if (e == kNoIndex || !status_.contains(e)) continue;
             if (!any_ending) {
                 Index lo = e;
                 Index hi = e;
@@ -101,7 +104,7 @@ private:
             below = above == StatusList::kNone ? status_.last() : status_.prev(above);
         }
         if (check_ && above != StatusList::kNone && orient2d(left(above), right(above), p) == Sign::Zero) {
-            throw_vertex_on_edge(g_, rg_.vertex[r], EdgeId(above));
+            throw_vertex_on_edge(g_, rg_.vertex[r], EdgeId(spans_[above].edge));
         }
         if (wanted[r] != 0) below_out[r] = below == StatusList::kNone ? kNoIndex : spans_[below].start_slot;
 
@@ -114,8 +117,10 @@ private:
         Index last = below;
         auto insert_starting = [&](Index s) {
             if (rg_.target[s] < r) return;
-            const Index e = edge_of(rg_.half_edge[s]).index();
-            spans_[e] = Span{r, rg_.target[s], s};
+            const Index edge = edge_of(rg_.half_edge[s]).index();
+            const Index e = next_node_++;
+            node_of_edge_[edge] = e;
+            spans_[e] = Span{r, rg_.target[s], s, edge};
             status_.insert_above(last, e);
             if (lowest_new == StatusList::kNone) lowest_new = e;
             last = e;
@@ -132,12 +137,15 @@ private:
         }
     }
 
-    // Throws when edges s and t meet other than at a shared endpoint.
-    void check_pair(Index s, Index t) const {
-        const Point a_left = left(s);
-        const Point a_right = right(s);
-        const Point b_left = left(t);
-        const Point b_right = right(t);
+    // Throws when the edges of nodes ns and nt meet other than at a shared
+    // endpoint.
+    void check_pair(Index ns, Index nt) const {
+        const Index s = spans_[ns].edge;
+        const Index t = spans_[nt].edge;
+        const Point a_left = left(ns);
+        const Point a_right = right(ns);
+        const Point b_left = left(nt);
+        const Point b_right = right(nt);
         switch (segment_contact(a_left, a_right, b_left, b_right)) {
             case Contact::None:
             case Contact::SharedEndpoint: return;
@@ -152,11 +160,11 @@ private:
             case Contact::Touch:
             case Contact::Overlap: {
                 // Name a vertex that lies inside the other segment.
-                const std::pair<Index, Index> cases[] = {{s, t}, {t, s}};
+                const std::pair<Index, Index> cases[] = {{ns, nt}, {nt, ns}};
                 for (const auto& [seg, other] : cases) {
                     for (const Index v : {spans_[seg].left, spans_[seg].right}) {
                         if (strictly_inside_segment(left(other), right(other), rg_.point[v])) {
-                            throw_vertex_on_edge(g_, rg_.vertex[v], EdgeId(other));
+                            throw_vertex_on_edge(g_, rg_.vertex[v], EdgeId(spans_[other].edge));
                         }
                     }
                 }
@@ -167,11 +175,16 @@ private:
         }
     }
 
+    // Status nodes are numbered in the order edges enter it, so that the
+    // nodes of neighbouring edges sit close in memory whatever the input
+    // order; node_of_edge_ is the one scattered access per edge.
     const RankGraph& rg_;
     const PlanarGraph& g_;
     bool check_;
-    std::vector<Span> spans_;  // per edge, set when it enters the status
-    StatusList status_;        // node ids are edge ids
+    std::vector<Index> node_of_edge_;  // by input edge id
+    std::vector<Span> spans_;          // by node
+    StatusList status_;
+    Index next_node_ = 0;
 };
 
 }  // namespace
