@@ -2,9 +2,10 @@
 // inputs; prints a table of ns per edge, bytes per edge and ratios, and with
 // --json one row per (input, implementation). See docs/performance.md.
 //
-//   dcel_bench [--small] [--json] [--verify] [--repeat N] [--only INPUT] [--impl IMPL]
+//   dcel_bench [--small] [--json] [--verify] [--repeat N] [--only INPUT] [--impl IMPL] [--no-io]
+//   dcel_bench --write-input INPUT FILE     (the input as graph JSON, for timing the CLI)
 // (--only and --impl keep the inputs and implementations whose names
-// contain the given text.)
+// contain the given text; --no-io skips the JSON reader/writer rows.)
 //
 // Timing: from the in-memory PlanarGraph to the implementation's finished
 // structure (dcel: the Dcel; peers: their cycles or arrangement), in thread
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <functional>
@@ -26,6 +28,8 @@
 
 #include "alloc_counter.hpp"
 #include "dcel/build.hpp"
+#include "dcel/io/dcel_json.hpp"
+#include "dcel/io/graph_json.hpp"
 #include "dcel/queries.hpp"
 #include "inputs.hpp"
 #include "peers/atan2_solver.hpp"
@@ -233,7 +237,64 @@ struct Options {
     std::size_t repeat = 3;
     std::string only;
     std::string impl;  // run only implementations whose name contains this
+    bool io = true;    // also time the JSON reader and writer
 };
+
+// Reading and writing JSON on the text of the input graph: read_graph (text
+// to PlanarGraph) and write_faces (dcel's boundary cycles to text), as MB/s
+// of the text read or written; median of --repeat runs.
+void measure_json(const Case& k, const PlanarGraph& g, const Options& o) {
+    const std::string text = io::write_graph(g);
+    const Dcel d = build(g);
+    std::vector<double> read_s;
+    std::vector<double> write_s;
+    std::size_t out_size = 0;
+    for (std::size_t i = 0; i < o.repeat; ++i) {
+        double c0 = thread_cpu_seconds();
+        const PlanarGraph back = io::read_graph(text);
+        read_s.push_back(thread_cpu_seconds() - c0);
+        if (back.edges.size() != g.edges.size()) std::abort();
+        c0 = thread_cpu_seconds();
+        const std::string out = io::write_faces_of(d);
+        write_s.push_back(thread_cpu_seconds() - c0);
+        out_size = out.size();
+    }
+    const double edges = static_cast<double>(std::max<std::size_t>(1, g.edges.size()));
+    const struct {
+        const char* name;
+        double seconds;
+        double bytes;
+    } rows[] = {{"json-read", median(read_s), static_cast<double>(text.size())},
+                {"json-write-faces", median(write_s), static_cast<double>(out_size)}};
+    for (const auto& row : rows) {
+        const double mb_s = row.bytes / 1e6 / row.seconds;
+        const double ns = row.seconds * 1e9 / edges;
+        if (o.json) {
+            std::printf("{\"input\": \"%s\", \"impl\": \"%s\", \"edges\": %zu, \"ns_per_edge\": %.1f, "
+                        "\"bytes_per_edge\": null, \"mb_per_s\": %.0f, \"text_bytes\": %.0f}\n",
+                        k.input.c_str(), row.name, g.edges.size(), ns, mb_s, row.bytes);
+        } else {
+            std::printf("%-24s %9zu  %-15s %10.1f %8s   %.0f MB/s of %.1f MB\n", k.input.c_str(), g.edges.size(),
+                        row.name, ns, "-", mb_s, row.bytes / 1e6);
+        }
+    }
+}
+
+// Writes the named input as graph JSON (for timing the CLI end to end).
+int write_input(const std::string& name, const std::string& path) {
+    for (const Case& k : cases()) {
+        if (k.input != name) continue;
+        const std::string text = io::write_graph(k.make());
+        std::FILE* f = std::fopen(path.c_str(), "wb");
+        if (f == nullptr || std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fclose(f) != 0) {
+            std::fprintf(stderr, "dcel_bench: cannot write %s\n", path.c_str());
+            return 2;
+        }
+        return 0;
+    }
+    std::fprintf(stderr, "dcel_bench: no input named %s\n", name.c_str());
+    return 2;
+}
 
 int run(const Options& o) {
     count_gmp_allocations();
@@ -272,6 +333,7 @@ int run(const Options& o) {
             }
             std::fflush(stdout);
         }
+        if (o.io && k.family.rfind("delaunay", 0) == 0 && o.impl.empty()) measure_json(k, g, o);
     }
     return ok ? 0 : 1;
 }
@@ -295,9 +357,14 @@ int main(int argc, char** argv) {
             o.only = argv[++i];
         } else if (a == "--impl" && i + 1 < argc) {
             o.impl = argv[++i];
+        } else if (a == "--no-io") {
+            o.io = false;
+        } else if (a == "--write-input" && i + 2 < argc) {
+            return dcel::bench::write_input(argv[i + 1], argv[i + 2]);
         } else {
             std::fprintf(stderr,
-                         "usage: dcel_bench [--small] [--json] [--verify] [--repeat N] [--only INPUT] [--impl IMPL]\n");
+                         "usage: dcel_bench [--small] [--json] [--verify] [--repeat N] [--only INPUT] [--impl IMPL] [--no-io]\n"
+                         "       dcel_bench --write-input INPUT FILE\n");
             return 2;
         }
     }
