@@ -49,16 +49,17 @@ public:
     Dcel run() {
         PHASE(check_elements(g_));                                        // O(V + E)
         LexOrder lex;
-        PHASE(lex = lex_order_checked(g_.vertices));
-        PHASE(rg_ = rank_graph_checked(g_, std::move(lex)));  // O(V + E log d), O(V log V) worst
+        PHASE(lex = lex_order_checked(g_.vertices));                      // O(V) typical, O(V log V) worst
+        PHASE(rg_ = rank_graph_checked(g_, std::move(lex)));              // O(V + E log d)
         PHASE(find_components());                                         // O((V + E) alpha)
-        PHASE(link_slots());                                              // O(E)
+        PHASE(find_edges_below());                                        // sweep: O((V + E) log(V + E))
+        PHASE(link_slots());                                              // O(E), O(E log d) worst
         PHASE(find_cycles());                                             // O(E)
-        PHASE(place_components());                                        // sweep: O((V + E) log(V + E))
+        PHASE(place_components());                                        // O(V)
         PHASE(number_faces());                                            // O(E)
         PHASE(write_half_edges());                                        // O(E)
         PHASE(write_faces());                                             // O(F + holes log holes)
-        PHASE(d_.points_ = g_.vertices);
+        PHASE(d_.points_ = g_.vertices);                                  // O(V)
         return std::move(d_);
     }
 
@@ -100,24 +101,23 @@ private:
         }
     }
 
-    // The slot of the twin of slot s's half-edge: the entry of target(s)'s
-    // ring that points back at s's vertex r. Small rings are scanned (they
-    // sit next to r's in memory); large ones are binary searched by exact
-    // angle (their directions are distinct). O(min(d, log d)) per slot, and
-    // no scattered memory access, whatever the input order.
-    [[nodiscard]] Index twin_slot(Index r, Index s) const {
-        const Index t = rg_.target[s];
-        const Index first = rg_.offset[t];
-        const Index last = rg_.offset[t + 1];
-        if (last - first <= 16) {
-            Index x = first;
-            while (rg_.target[x] != r) ++x;
-            return x;
-        }
+    static constexpr Index kSmallRing = 16;
+
+    // The slot in ring t that points back at rank r: a scan, since small
+    // rings sit next to r's in memory.
+    [[nodiscard]] Index scan_for(Index t, Index r) const {
+        Index x = rg_.offset[t];
+        while (rg_.target[x] != r) ++x;
+        return x;
+    }
+
+    // The same in a large ring, by binary search on exact angle (a ring's
+    // directions are distinct). O(log d).
+    [[nodiscard]] Index search_for(Index t, Index r) const {
         const Point centre = rg_.point[t];
         const Point back = rg_.point[r];
-        Index lo = first;  // lower bound of `back` in the ring
-        Index hi = last;
+        Index lo = rg_.offset[t];  // lower bound of `back` in the ring
+        Index hi = rg_.offset[t + 1];
         while (lo < hi) {
             const Index mid = lo + (hi - lo) / 2;
             if (compare_angle(centre, rg_.point[rg_.target[mid]], back) == Sign::Negative) {
@@ -130,12 +130,24 @@ private:
     }
 
     // next_slot_[s]: the slot of next(half_edge[s]), the half-edge leaving
-    // target(s) just clockwise of the twin.
+    // target(s) just clockwise of the twin. Twins are found from the small
+    // ring's side: a slot pointing into a small ring scans it (and then also
+    // links the twin, which points into this ring); only an edge between two
+    // large rings needs a binary search. O(E) with no scattered memory
+    // access whatever the input order; O(E log d) at worst.
     void link_slots() {
-        next_slot_.resize(num_slots());
+        next_slot_.assign(num_slots(), kNoIndex);
         for (Index r = 0; r < rg_.num_vertices(); ++r) {
+            const bool r_small = rg_.degree(r) <= kSmallRing;
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
-                next_slot_[s] = rg_.clockwise(rg_.target[s], twin_slot(r, s));
+                const Index t = rg_.target[s];
+                if (rg_.degree(t) <= kSmallRing) {
+                    const Index twin_slot = scan_for(t, r);
+                    next_slot_[s] = rg_.clockwise(t, twin_slot);
+                    if (!r_small) next_slot_[twin_slot] = rg_.clockwise(r, s);
+                } else if (!r_small) {
+                    next_slot_[s] = rg_.clockwise(t, search_for(t, r));
+                }  // else: set from t's large ring
             }
         }
     }
@@ -161,6 +173,21 @@ private:
         }
     }
 
+    // The sweep: rejects crossings (when asked to) and finds, for each
+    // component's leftmost vertex, the edge directly below it, as the slot of
+    // its left-to-right half-edge. It runs before the cycles are found, so
+    // that its memory and theirs are never held at once. Skipped for a
+    // connected graph when crossings are not checked.
+    void find_edges_below() {
+        below_.assign(leftmost_.size(), kNoIndex);
+        if (!options_.check_crossings && leftmost_.size() <= 1) return;
+        std::vector<char> wanted(rg_.num_vertices(), 0);
+        for (const Index r : leftmost_) wanted[r] = 1;
+        std::vector<Index> below(rg_.num_vertices(), kNoIndex);
+        sweep_ranks(rg_, g_, wanted, below, options_.check_crossings);
+        for (Index c = 0; c < leftmost_.size(); ++c) below_[c] = below[leftmost_[c]];
+    }
+
     // The outer cycle of a component passes through its leftmost vertex, on
     // the side of the wedge that contains the direction west. A component
     // lies in the face just above the edge below its leftmost vertex; if that
@@ -184,23 +211,17 @@ private:
             outer_cycle_[c] = cycle_of_slot_[first + (k + degree - 1) % degree];
             is_outer_cycle_[outer_cycle_[c]] = 1;
         }
-
-        std::vector<Index> below(rg_.num_vertices(), kNoIndex);
-        if (options_.check_crossings || components > 1) {
-            std::vector<char> wanted(rg_.num_vertices(), 0);
-            for (const Index r : leftmost_) wanted[r] = 1;
-            sweep_ranks(rg_, g_, wanted, below, options_.check_crossings);
-        }
         // Containers are face numbers, known only after number_faces(): for
         // now, a cycle (kNoIndex: the unbounded face).
         container_cycle_.assign(components, kNoIndex);
         for (Index c = 0; c < components; ++c) {
-            const Index s = below[leftmost_[c]];
+            const Index s = below_[c];
             if (s == kNoIndex) continue;
             const Index cycle = cycle_of_slot_[s];  // the slot's half-edge runs left to right: face above
             // The edge's right end is in the component whose outer boundary it may be.
             container_cycle_[c] = is_outer_cycle_[cycle] != 0 ? container_cycle_[component_[rg_.target[s]]] : cycle;
         }
+        release(below_);
         release(rg_.point);
         release(rg_.target);
         release(component_);
@@ -287,6 +308,7 @@ private:
 
     std::vector<Index> component_;        // per rank
     std::vector<Index> leftmost_;         // per component: the rank of its leftmost vertex
+    std::vector<Index> below_;            // per component: the slot below its leftmost vertex, or kNoIndex
     std::size_t isolated_count_ = 0;      // components without edges
     std::vector<Index> next_slot_;        // per slot
     std::vector<Index> cycle_of_slot_;    // per slot

@@ -1,7 +1,8 @@
 // The sweep order of the vertices: by x, then by y (lex_less), ties by id.
 //
-// A bucket sort on x followed by exact sorts inside each bucket: O(V) on
-// spread-out points, O(V log V) in the worst case (all x equal). The bucket
+// A bucket sort on x followed by exact sorts inside each bucket (a bucket
+// sort on y for a large bucket of one x, such as a grid's column): O(V) on
+// spread-out points and on grids, O(V log V) in the worst case. The bucket
 // of a point is floor((x - xmin) * scale): every IEEE operation in it is
 // monotone, so x1 <= x2 gives bucket(x1) <= bucket(x2), and the order
 // between buckets agrees with the exact order. Only comparisons of

@@ -4,10 +4,11 @@
 // Each direction first gets its quadrant from coordinate comparisons
 // ([0, pi/2), [pi/2, pi), [pi, 3pi/2), [3pi/2, 2pi)); two directions in one
 // quadrant are less than pi/2 apart, so orient2d decides between them. This
-// is the order compare_angle gives, with fewer orient2d calls. Rings of up
-// to 24 entries are first ordered by a floating-point guess at the angle and
-// then confirmed with one orient2d per adjacent pair (an exact insertion
-// sort when the guess was wrong); larger ones go to std::sort.
+// is the order compare_angle gives, with fewer orient2d calls. Rings are
+// first ordered by a floating-point guess at the angle (a branch-free
+// network up to 8 entries, insertion sort up to 24, std::sort on integer
+// keys above), then confirmed with one orient2d per adjacent pair; when the
+// guess was wrong anywhere, the ring is sorted again exactly.
 // O(d log d) for d entries.
 #pragma once
 
