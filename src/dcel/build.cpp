@@ -237,11 +237,13 @@ private:
             if (is_outer_cycle_[c] == 0) cycle_named_by[cycle_rep_[c].index()] = c;
         }
         face_of_cycle_.assign(cycle_rep_.size(), kNoIndex);
-        Index next_face = 1;
+        face_outer_.reserve(1 + cycle_rep_.size() - (leftmost_.size() - isolated_count_));
+        face_outer_.assign(1, HalfEdgeId());  // the unbounded face has no outer cycle
         for (Index h = 0; h < cycle_named_by.size(); ++h) {
-            if (cycle_named_by[h] != kNoIndex) face_of_cycle_[cycle_named_by[h]] = next_face++;
+            if (cycle_named_by[h] == kNoIndex) continue;
+            face_of_cycle_[cycle_named_by[h]] = static_cast<Index>(face_outer_.size());
+            face_outer_.emplace_back(h);
         }
-        num_faces_ = next_face;
         release(cycle_named_by);
         for (Index c = 0; c < leftmost_.size(); ++c) {
             const Index container = container_cycle_[c] == kNoIndex ? 0 : face_of_cycle_[container_cycle_[c]];
@@ -280,22 +282,25 @@ private:
         release(rg_.offset);
     }
 
+    // One pass in face order; only faces with two or more holes or isolated
+    // vertices need their lists sorted.
     void write_faces() {
-        d_.faces_.clear();
-        d_.faces_.shrink_to_fit();
-        d_.faces_.resize(num_faces_);
-        for (Index c = 0; c < cycle_rep_.size(); ++c) {
-            if (is_outer_cycle_[c] == 0) d_.faces_[face_of_cycle_[c]].outer = cycle_rep_[c];
-        }
+        std::vector<FaceRecord>().swap(d_.faces_);
+        d_.faces_.reserve(face_outer_.size());
+        for (const HalfEdgeId outer : face_outer_) d_.faces_.push_back(FaceRecord{outer, {}, {}});
+        release(face_outer_);
+        std::vector<Index> crowded;  // faces given a second hole or isolated vertex
         for (Index c = 0; c < leftmost_.size(); ++c) {
             FaceRecord& f = d_.faces_[container_cycle_[c]];
+            if (f.inner.size() + f.isolated.size() == 1) crowded.push_back(container_cycle_[c]);
             if (outer_cycle_[c] == kNoIndex) {
                 f.isolated.push_back(rg_.vertex[leftmost_[c]]);
             } else {
                 f.inner.push_back(cycle_rep_[outer_cycle_[c]]);
             }
         }
-        for (FaceRecord& f : d_.faces_) {
+        for (const Index i : crowded) {
+            FaceRecord& f = d_.faces_[i];
             std::sort(f.inner.begin(), f.inner.end());
             std::sort(f.isolated.begin(), f.isolated.end());
         }
@@ -317,7 +322,7 @@ private:
     std::vector<Index> outer_cycle_;      // per component; kNoIndex when isolated
     std::vector<Index> container_cycle_;  // per component: see place_components, then number_faces
     std::vector<Index> face_of_cycle_;    // per cycle
-    Index num_faces_ = 1;
+    std::vector<HalfEdgeId> face_outer_;  // per face: its outer cycle's smallest half-edge (null: unbounded)
 };
 
 Dcel build(const PlanarGraph& graph, const BuildOptions& options) { return DcelBuilder(graph, options).run(); }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
@@ -50,20 +51,25 @@ void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& r
     };
     std::vector<Record> records(2 * static_cast<std::size_t>(m));
     {
+        // The ranks of each edge's ends, read once (scattered reads when the
+        // input is in random order) and then streamed twice.
+        std::vector<std::pair<Index, Index>> ends(m);
         std::vector<Index> start(groups + 1, 0);
-        for (const GraphEdge& e : g.edges) {
-            ++start[(rank[e.u.index()] >> shift) + 1];
-            ++start[(rank[e.v.index()] >> shift) + 1];
-        }
-        for (Index b = 0; b < groups; ++b) start[b + 1] += start[b];
         for (Index k = 0; k < m; ++k) {
             const Index ru = rank[g.edges[k].u.index()];
             const Index rv = rank[g.edges[k].v.index()];
+            ends[k] = {ru, rv};
+            ++start[(ru >> shift) + 1];
+            ++start[(rv >> shift) + 1];
+        }
+        std::vector<Index>().swap(rank);
+        for (Index b = 0; b < groups; ++b) start[b + 1] += start[b];
+        for (Index k = 0; k < m; ++k) {
+            const auto [ru, rv] = ends[k];
             records[start[ru >> shift]++] = Record{ru, rv, HalfEdgeId(2 * k)};
             records[start[rv >> shift]++] = Record{rv, ru, HalfEdgeId(2 * k + 1)};
         }
     }
-    std::vector<Index>().swap(rank);
 
     rg.offset.assign(n + 1, 0);
     for (const Record& r : records) ++rg.offset[r.origin + 1];
