@@ -333,7 +333,8 @@ int run(const Options& o) {
             }
             std::fflush(stdout);
         }
-        if (o.io && k.family.rfind("delaunay", 0) == 0 && o.impl.empty()) measure_json(k, g, o);
+        const bool json_rows = o.impl.empty() || std::string("json").find(o.impl) != std::string::npos;
+        if (o.io && json_rows && k.family.rfind("delaunay", 0) == 0) measure_json(k, g, o);
     }
     return ok ? 0 : 1;
 }

@@ -9,20 +9,6 @@
 #include "dcel/rank_graph.hpp"
 #include "dcel/sweep.hpp"
 
-#ifdef DCEL_PHASE_TIMING
-#include <chrono>
-#include <cstdio>
-#define PHASE(x)                                                                                     \
-    do {                                                                                             \
-        const auto t0_ = std::chrono::steady_clock::now();                                           \
-        x;                                                                                           \
-        std::fprintf(stderr, "  %-40s %8.1f ms\n", #x,                                               \
-                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0_).count()); \
-    } while (0)
-#else
-#define PHASE(x) x
-#endif
-
 namespace dcel {
 namespace {
 
@@ -47,19 +33,17 @@ public:
     DcelBuilder(const PlanarGraph& g, const BuildOptions& options) : g_(g), options_(options) {}
 
     Dcel run() {
-        PHASE(check_elements(g_));                                        // O(V + E)
-        LexOrder lex;
-        PHASE(lex = lex_order_checked(g_.vertices));                      // O(V) typical, O(V log V) worst
-        PHASE(rg_ = rank_graph_checked(g_, std::move(lex)));              // O(V + E log d)
-        PHASE(find_components());                                         // O((V + E) alpha)
-        PHASE(find_edges_below());                                        // sweep: O((V + E) log(V + E))
-        PHASE(link_slots());                                              // O(E), O(E log d) worst
-        PHASE(find_cycles());                                             // O(E)
-        PHASE(place_components());                                        // O(V)
-        PHASE(number_faces());                                            // O(E)
-        PHASE(write_half_edges());                                        // O(E)
-        PHASE(write_faces());                                             // O(F + holes log holes)
-        PHASE(d_.points_ = g_.vertices);                                  // O(V)
+        check_elements(g_);                                        // O(V + E)
+        rg_ = rank_graph_checked(g_, lex_order_checked(g_.vertices));  // O(V + E log d); sort O(V log V) worst
+        find_components();                                         // O((V + E) alpha)
+        find_edges_below();                                        // sweep: O((V + E) log(V + E))
+        link_slots();                                              // O(E), O(E log d) worst
+        find_cycles();                                             // O(E)
+        place_components();                                        // O(V)
+        number_faces();                                            // O(E)
+        write_half_edges();                                        // O(E)
+        write_faces();                                             // O(F + holes log holes)
+        d_.points_ = g_.vertices;                                  // O(V)
         return std::move(d_);
     }
 
