@@ -31,13 +31,13 @@ void insertion_sort(Keyed* first, Keyed* last) {
     }
 }
 
-// Distributes [first, last) into about half as many buckets as elements by
-// the coordinate `key` selects, through floor((c - min) * scale): every IEEE
-// operation in it is monotone, so c1 <= c2 gives bucket(c1) <= bucket(c2)
-// and the buckets come in exact order. Returns the bucket ends; `scratch`
-// must hold last - first elements.
+// Distributes [first, last) into `out` (last - first elements), in about
+// half as many buckets as elements by the coordinate `key` selects, through
+// floor((c - min) * scale): every IEEE operation in it is monotone, so
+// c1 <= c2 gives bucket(c1) <= bucket(c2) and the buckets come in exact
+// order. Returns the bucket ends.
 template <class Key>
-std::vector<Index> distribute(Keyed* first, Keyed* last, Keyed* scratch, Key key) {
+std::vector<Index> distribute(const Keyed* first, const Keyed* last, Keyed* out, Key key) {
     const auto n = static_cast<Index>(last - first);
     double lo = key(*first);
     double hi = lo;
@@ -58,8 +58,7 @@ std::vector<Index> distribute(Keyed* first, Keyed* last, Keyed* scratch, Key key
     std::vector<Index> end(buckets + 1, 0);
     for (const Keyed* p = first; p != last; ++p) ++end[bucket_of(*p) + 1];
     for (Index b = 0; b < buckets; ++b) end[b + 1] += end[b];
-    for (const Keyed* p = first; p != last; ++p) scratch[end[bucket_of(*p)]++] = *p;
-    std::copy(scratch, scratch + n, first);
+    for (const Keyed* p = first; p != last; ++p) out[end[bucket_of(*p)]++] = *p;
     end.pop_back();  // end[b] is now the end of bucket b
     return end;
 }
@@ -78,6 +77,7 @@ void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
         return;
     }
     const std::vector<Index> ends = distribute(first, last, scratch, [](const Keyed& k) { return k.p.y; });
+    std::copy(scratch, scratch + (last - first), first);
     Index begin = 0;
     for (const Index end : ends) {
         if (end - begin > 16) {
@@ -98,10 +98,10 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
     out.rank_of_vertex.resize(n);
     if (n == 0) return out;
 
-    std::vector<Keyed> sorted(n);
-    for (Index v = 0; v < n; ++v) sorted[v] = Keyed{points[v], v};
     std::vector<Keyed> scratch(n);
-    const std::vector<Index> ends = distribute(sorted.data(), sorted.data() + n, scratch.data(),
+    for (Index v = 0; v < n; ++v) scratch[v] = Keyed{points[v], v};
+    std::vector<Keyed> sorted(n);
+    const std::vector<Index> ends = distribute(scratch.data(), scratch.data() + n, sorted.data(),
                                                [](const Keyed& k) { return k.p.x; });
     Index begin = 0;
     for (const Index end : ends) {

@@ -58,11 +58,14 @@ inline void compare_swap(std::uint64_t& a, std::uint64_t& b) {
 
 // Batcher's odd-even merge sort for 8 keys: 19 comparators, no branches,
 // so the unpredictable comparisons of a ring's angles cost no mispredictions.
-void sort8(std::uint64_t* k) {
-    static constexpr unsigned char kPairs[19][2] = {{0, 1}, {2, 3}, {4, 5}, {6, 7}, {0, 2}, {1, 3}, {4, 6},
-                                                    {5, 7}, {1, 2}, {5, 6}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
+// Its first 5 comparators (in this order) sort keys 0..3 on their own, which
+// is all a ring of degree <= 4 (a grid's) needs.
+void sort8(std::uint64_t* k, std::size_t n) {
+    static constexpr unsigned char kPairs[19][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}, {1, 2}, {4, 5}, {6, 7},
+                                                    {4, 6}, {5, 7}, {5, 6}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
                                                     {2, 4}, {3, 5}, {1, 2}, {3, 4}, {5, 6}};
-    for (const auto& [i, j] : kPairs) compare_swap(k[i], k[j]);
+    const std::size_t used = n <= 4 ? 5 : 19;
+    for (std::size_t c = 0; c < used; ++c) compare_swap(k[kPairs[c][0]], k[kPairs[c][1]]);
 }
 
 // The exact check after a guessed order: one orient2d per adjacent pair in
@@ -140,7 +143,7 @@ std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
             const auto guess = static_cast<std::uint64_t>(approximate_angle(centre, ring[i]) * 0x1p55);
             key[i] = (std::uint64_t{ring[i].quadrant} << 61U) | (guess << 5U) | i;
         }
-        sort8(key);
+        sort8(key, n);
         RingEntry sorted[8];
         for (std::size_t i = 0; i < n; ++i) sorted[i] = ring[key[i] & 31U];
         std::copy(sorted, sorted + n, ring.begin());
