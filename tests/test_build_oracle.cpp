@@ -223,6 +223,14 @@ TEST(BuildOracle, RejectsExactlyTheInvalidGraphsAndNamesARealCulprit) {
     for (int round = 0; round < 600; ++round) {
         const PlanarGraph g = random_graph(rng, round % 3 == 0);
         const bool ok = valid(g);
+        // Unchecked mode promises only memory safety and termination on
+        // crossing input (checked under the sanitizers); on valid input it
+        // must agree with the checked build (first test).
+        try {
+            EXPECT_EQ(build(g, {.check_crossings = false}).num_edges(), g.edges.size());
+        } catch (const InvalidInput& e) {
+            EXPECT_FALSE(ok) << e.what();  // duplicate edges and same-direction edges are still rejected
+        }
         try {
             (void)build(g);
             EXPECT_TRUE(ok) << "round " << round << ": accepted an invalid graph";
