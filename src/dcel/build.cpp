@@ -85,34 +85,6 @@ private:
         }
     }
 
-    static constexpr Index kSmallRing = 16;
-
-    // The slot in ring t that points back at rank r: a scan, since small
-    // rings sit next to r's in memory.
-    [[nodiscard]] Index scan_for(Index t, Index r) const {
-        Index x = rg_.offset[t];
-        while (rg_.target[x] != r) ++x;
-        return x;
-    }
-
-    // The same in a large ring, by binary search on exact angle (a ring's
-    // directions are distinct). O(log d).
-    [[nodiscard]] Index search_for(Index t, Index r) const {
-        const Point centre = rg_.point[t];
-        const Point back = rg_.point[r];
-        Index lo = rg_.offset[t];  // lower bound of `back` in the ring
-        Index hi = rg_.offset[t + 1];
-        while (lo < hi) {
-            const Index mid = lo + (hi - lo) / 2;
-            if (compare_angle(centre, rg_.point[rg_.target[mid]], back) == Sign::Negative) {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        return lo;
-    }
-
     // next_slot_[s]: the slot of next(half_edge[s]), the half-edge leaving
     // target(s) just clockwise of the twin. Twins are found from the small
     // ring's side: a slot pointing into a small ring scans it (and then also
@@ -122,15 +94,15 @@ private:
     void link_slots() {
         next_slot_.assign(num_slots(), kNoIndex);
         for (Index r = 0; r < rg_.num_vertices(); ++r) {
-            const bool r_small = rg_.degree(r) <= kSmallRing;
+            const bool r_small = rg_.small(r);
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
                 const Index t = rg_.target[s];
-                if (rg_.degree(t) <= kSmallRing) {
-                    const Index twin_slot = scan_for(t, r);
+                if (rg_.small(t)) {
+                    const Index twin_slot = rg_.slot_towards(t, r);
                     next_slot_[s] = rg_.clockwise(t, twin_slot);
                     if (!r_small) next_slot_[twin_slot] = rg_.clockwise(r, s);
                 } else if (!r_small) {
-                    next_slot_[s] = rg_.clockwise(t, search_for(t, r));
+                    next_slot_[s] = rg_.clockwise(t, rg_.slot_towards(t, r));
                 }  // else: set from t's large ring
             }
         }

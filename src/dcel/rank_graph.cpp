@@ -7,6 +7,7 @@
 
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
+#include "dcel/geometry/predicates.hpp"
 #include "dcel/input_checks.hpp"
 #include "dcel/ring_sort.hpp"
 
@@ -130,6 +131,22 @@ RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
     }
     if (!bad_vertex.is_null()) throw_same_direction(g, bad_vertex, bad_a, bad_b);
     return rg;
+}
+
+Index RankGraph::search_towards(Index t, Index r) const {
+    const Point centre = point[t];
+    const Point back = point[r];
+    Index lo = offset[t];  // the lower bound of `back` in the ring
+    Index hi = offset[t + 1];
+    while (lo < hi) {
+        const Index mid = lo + (hi - lo) / 2;
+        if (compare_angle(centre, point[target[mid]], back) == Sign::Negative) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
 }
 
 RankGraph rank_graph_from_rings(const PlanarGraph& g, std::span<const VertexId> lex_order,

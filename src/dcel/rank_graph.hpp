@@ -29,6 +29,21 @@ struct RankGraph {
     [[nodiscard]] Index degree(Index r) const { return offset[r + 1] - offset[r]; }
     // The slot just clockwise of slot s around its vertex r.
     [[nodiscard]] Index clockwise(Index r, Index s) const { return s == offset[r] ? offset[r + 1] - 1 : s - 1; }
+
+    // Rings up to this size are scanned; they sit next to their
+    // neighbours' rings in memory, so a scan is a few cached reads.
+    static constexpr Index kSmallRing = 16;
+    [[nodiscard]] bool small(Index r) const { return degree(r) <= kSmallRing; }
+    // The slot of t's ring whose half-edge goes to r; the edge must exist.
+    // A scan for a small ring, else a binary search by exact angle (a
+    // ring's directions are distinct). O(min(d, log d)).
+    [[nodiscard]] Index slot_towards(Index t, Index r) const {
+        if (!small(t)) return search_towards(t, r);
+        Index x = offset[t];
+        while (target[x] != r) ++x;
+        return x;
+    }
+    [[nodiscard]] Index search_towards(Index t, Index r) const;  // the binary search
 };
 
 // Rings from a graph that passed check_elements, in the order `lex` gives.

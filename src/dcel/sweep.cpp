@@ -51,7 +51,7 @@ struct Span {
 class Sweep {
 public:
     Sweep(const RankGraph& rg, const PlanarGraph& g, bool check)
-        : rg_(rg), g_(g), check_(check), node_of_edge_(g.edges.size(), kNoIndex), spans_(g.edges.size()),
+        : rg_(rg), g_(g), check_(check), node_of_slot_(rg.num_slots(), kNoIndex), spans_(g.edges.size()),
           status_(static_cast<Index>(g.edges.size())) {}
 
     // One event per vertex, in rank order: O(degree) list work, plus one
@@ -69,6 +69,19 @@ private:
         return orient2d(left(e), right(e), p) == Sign::Positive;
     }
 
+    // Where an edge's status node is recorded: in the slot at its right end
+    // when that ring is small (found by a scan of it, next door in memory),
+    // else in the slot at its left end (found from the right end by a scan
+    // or search of the left end's ring). Either way both ends reach it
+    // through memory near them, never through the input's edge ids.
+    [[nodiscard]] Index home_of_starting(Index r, Index s) const {
+        const Index t = rg_.target[s];
+        return rg_.small(t) ? rg_.slot_towards(t, r) : s;
+    }
+    [[nodiscard]] Index home_of_ending(Index r, Index s) const {
+        return rg_.small(r) ? s : rg_.slot_towards(rg_.target[s], r);
+    }
+
     void visit(Index r, std::span<const char> wanted, std::span<Index> below_out) {
         const Point p = rg_.point[r];
         const Index ring_begin = rg_.offset[r];
@@ -82,7 +95,7 @@ private:
         bool any_ending = false;
         for (Index s = ring_begin; s < ring_end; ++s) {
             if (rg_.target[s] >= r) continue;
-            const Index e = node_of_edge_[edge_of(rg_.half_edge[s]).index()];
+            const Index e = node_of_slot_[home_of_ending(r, s)];
             if (e == kNoIndex || !status_.contains(e)) continue;
             if (!any_ending) {
                 Index lo = e;
@@ -119,7 +132,7 @@ private:
             if (rg_.target[s] < r) return;
             const Index edge = edge_of(rg_.half_edge[s]).index();
             const Index e = next_node_++;
-            node_of_edge_[edge] = e;
+            node_of_slot_[home_of_starting(r, s)] = e;
             spans_[e] = Span{r, rg_.target[s], s, edge};
             status_.insert_above(last, e);
             if (lowest_new == StatusList::kNone) lowest_new = e;
@@ -177,11 +190,11 @@ private:
 
     // Status nodes are numbered in the order edges enter it, so that the
     // nodes of neighbouring edges sit close in memory whatever the input
-    // order; node_of_edge_ is the one scattered access per edge.
+    // order.
     const RankGraph& rg_;
     const PlanarGraph& g_;
     bool check_;
-    std::vector<Index> node_of_edge_;  // by input edge id
+    std::vector<Index> node_of_slot_;  // see home_of_starting
     std::vector<Span> spans_;          // by node
     StatusList status_;
     Index next_node_ = 0;
