@@ -1,0 +1,28 @@
+// Internal to dcel::check: gathers differences kind by kind, caps each kind
+// at kMaxListedPerKind, and hands back a Report in the documented order.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "dcel/check/compare.hpp"
+
+namespace dcel::check::detail {
+
+inline constexpr std::size_t kKindCount = 12;
+
+class Collector {
+public:
+    // False once this kind is full: callers skip building the message.
+    [[nodiscard]] bool wants(DifferenceKind k);
+    void add(DifferenceKind k, std::string message, std::vector<Index> vertices = {});
+    [[nodiscard]] Report finish() &&;
+
+private:
+    std::array<std::vector<Difference>, kKindCount> by_kind_;
+    std::size_t unlisted_ = 0;
+};
+
+}  // namespace dcel::check::detail

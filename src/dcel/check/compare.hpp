@@ -1,0 +1,80 @@
+// Comparing another implementation's answer with the reference DCEL.
+//
+// Two forms of answer:
+//  - faces: every boundary cycle as its vertex ids in next order, as
+//    `dcel faces` prints. Cycle order and rotation do not matter,
+//    orientation does; the multiset of cycles must equal the reference's.
+//  - a whole dump (DcelDump, the `dcel build` format). It is validated first
+//    (each broken invariant is a difference), then compared modulo the
+//    numbering of half-edges and faces: a half-edge is its (origin, target)
+//    pair, a face is its cycles. Vertex ids are fixed by the input.
+//
+// Nothing in an answer is trusted: ids may be huge, cycles empty or repeated.
+// The work is O(A log E) for an answer of total size A on a graph of E edges
+// (plus validation for a dump), and the report is capped (kMaxListedPerKind).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "dcel/dcel.hpp"
+#include "dcel/dump.hpp"
+#include "dcel/ids.hpp"
+
+namespace dcel::check {
+
+enum class DifferenceKind : std::uint8_t {
+    VertexCount,          // an answer names a vertex id >= V, or a dump has the wrong number of points
+    NotAnEdge,            // consecutive cycle vertices u, v that are not an edge of the graph
+    BrokenInvariant,      // a dump fails a validate.hpp checker (message names the checker and ids)
+    MissingCycle,         // a reference cycle the answer does not have
+    ExtraCycle,           // an answer cycle the reference does not have (or has fewer times)
+    ReversedCycle,        // an answer cycle that is a missing reference cycle walked backwards
+    WrongNext,            // at u->v the answer continues to v->x, the reference to v->w
+    WrongHole,            // a hole in the wrong face, or in none (dumps)
+    WrongOuterBoundary,   // a face's outer boundary listed as a hole, or the other way round (dumps)
+    WrongIsolatedVertex,  // an isolated vertex in the wrong face, in none, or not isolated (dumps)
+    WrongPoint,           // a dump's coordinates differ from the graph's (dumps)
+    UnreadableAnswer,     // the answer could not be read or parsed (never from compare_*: for callers
+                          // such as `dcel check` and `dcel diff`, which report it like any difference)
+};
+
+// "vertex-count", "not-an-edge", "broken-invariant", "missing-cycle",
+// "extra-cycle", "reversed-cycle", "wrong-next", "wrong-hole",
+// "wrong-outer-boundary", "wrong-isolated-vertex", "wrong-point",
+// "unreadable-answer".
+[[nodiscard]] std::string_view kind_name(DifferenceKind k);
+
+struct Difference {
+    DifferenceKind kind;
+    std::string message;          // one line, in words, naming the ids (and vertices u->v)
+    std::vector<Index> vertices;  // the vertices involved, e.g. the cycle, for drawing
+};
+
+// At most this many differences of one kind are listed; the rest are counted
+// in Report::unlisted. Bounds the report on a hostile answer.
+inline constexpr std::size_t kMaxListedPerKind = 100;
+
+struct Report {
+    // Deterministic order, the most telling first: by kind in the order
+    // unreadable-answer, vertex-count, wrong-point, broken-invariant, not-an-edge, wrong-next,
+    // reversed-cycle, missing-cycle, extra-cycle, wrong-outer-boundary,
+    // wrong-hole, wrong-isolated-vertex; within a kind, in answer order.
+    std::vector<Difference> differences;
+    std::size_t unlisted = 0;  // differences found beyond kMaxListedPerKind
+    [[nodiscard]] bool agrees() const { return differences.empty(); }
+};
+
+using FacesAnswer = std::vector<std::vector<Index>>;
+
+[[nodiscard]] Report compare_faces(const Dcel& reference, const FacesAnswer& answer);
+[[nodiscard]] Report compare_dump(const Dcel& reference, const DcelDump& answer);
+
+// The report for an answer that could not be read: one unreadable-answer
+// difference carrying `message` (e.g. the parser's "line 1, column 3: ...").
+[[nodiscard]] Report unreadable_answer(std::string message);
+
+}  // namespace dcel::check
