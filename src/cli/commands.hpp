@@ -13,5 +13,6 @@ void add_build_command(CLI::App& app, Action& action);
 void add_locate_command(CLI::App& app, Action& action);
 void add_stab_command(CLI::App& app, Action& action);
 void add_edit_command(CLI::App& app, Action& action);
+void add_diff_command(CLI::App& app, Action& action);
 
 }  // namespace dcel::cli

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     add_locate_command(app, action);
     add_stab_command(app, action);
     add_edit_command(app, action);
+    add_diff_command(app, action);
 
     try {
         app.parse(argc, argv);
