@@ -35,7 +35,7 @@ Exit status: 0 every case agrees; 1 a failure (the report is on stdout);
 
 std::string svg_title(const DiffOptions& options, const Counterexample& c) {
     return "dcel diff: " + failure_label(c.outcome) + ", case " + std::to_string(c.spec.number) + ", seed " +
-           std::to_string(options.seed) + ": " + c.outcome.what;
+           std::to_string(options.seed);
 }
 
 void write_svg(const std::string& path, const DiffOptions& options, const Counterexample& c) {

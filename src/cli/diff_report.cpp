@@ -88,6 +88,9 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
     if (!c.reproduced) {
         s << "not shrunk: run alone in a fresh process, the case did not fail the same way again, so it depends "
              "on the cases before it (--stream state) or the command is not deterministic\n";
+    } else if (c.steps == 0) {
+        s << "no smaller graph fails the same way (" << c.attempts << " attempts in " << seconds(c.shrink_elapsed)
+          << (c.budget_spent ? ", stopped by the shrink budget" : "") << ")\n";
     } else {
         s << "shrunk in " << seconds(c.shrink_elapsed) << " (" << c.attempts << " attempts, " << c.steps
           << " smaller failing graphs kept" << (c.budget_spent ? ", stopped by the shrink budget" : "")
@@ -111,9 +114,8 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
         }
     }
     if (options.stream && result.restarts > 0) {
-        s << "--stream: the command was restarted " << result.restarts
-          << (result.restarts == 1 ? " time" : " times")
-          << " (after each crash or timeout, and to replay the failing case alone)\n";
+        s << "--stream: \"CMD --stream\" was started " << result.restarts + 1
+          << " times: for the run, then afresh to replay the failing case alone and after each crash or timeout\n";
     }
     s << "\nreplay the case (it is shrunk again):\n  " << replay_command(options, c.spec.number) << "\n";
     s << "the original graph: dcel gen --family " << gen::family_name(c.spec.params.family) << " --seed "
