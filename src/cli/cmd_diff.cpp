@@ -24,8 +24,9 @@ With --stream, "CMD --stream" starts once and reads one graph per line, and
 must print each answer on one line; after a crash or a timeout it is started
 again.
 
-A failure is a crash (signal), a non-zero exit, a timeout, an answer that is
-not a faces answer, or a wrong answer. The failing graph is shrunk to a small
+A failure is a crash (a signal; /bin/sh's exit status 128 + N counts as
+signal N), a non-zero exit, a timeout, an answer that is not a faces answer,
+or a wrong answer. The failing graph is shrunk to a small
 one that fails the same way, and reported with the reference answer, what CMD
 said, the first difference and a command line that replays the case.
 
@@ -63,20 +64,26 @@ void add_diff_command(CLI::App& app, Action& action) {
     auto shrink_s = std::make_shared<double>(20);
     auto only_case = std::make_shared<std::size_t>(0);
     auto svg = std::make_shared<std::string>();
-    cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")->required();
-    auto* cases_opt = cmd->add_option("--cases", *cases, "Number of cases (default 200; unlimited with --time)");
-    cmd->add_option("--seed", options->seed, "Seed of the case schedule (default 1)");
+    cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")
+        ->required()
+        ->type_name("CMD");
+    auto* cases_opt = cmd->add_option("--cases", *cases, "Number of cases (default 200; unlimited with --time)")->type_name("N");
+    cmd->add_option("--seed", options->seed, "Seed of the case schedule (default 1)")->type_name("S");
     auto* time_opt = cmd->add_option("--time", *time_s, "Stop looking for a failure after T seconds")
-                         ->check(CLI::PositiveNumber);
+                         ->check(CLI::PositiveNumber)
+                         ->type_name("T");
     cmd->add_option("--max-vertices", options->max_vertices, "Largest graph size asked of the generators (default 60)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
+        ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))
+        ->type_name("K");
     cmd->add_flag("--stream", options->stream, "Start \"CMD --stream\" once; one graph per line in, one answer per line out");
-    cmd->add_option("--timeout-ms", *timeout_ms, "Time allowed per case (default 5000)")
-        ->check(CLI::Range(1L, 86400000L));
+    cmd->add_option("--timeout-ms", *timeout_ms, "Time allowed per case, in milliseconds (default 5000)")
+        ->check(CLI::Range(1L, 86400000L))
+        ->type_name("M");
     cmd->add_option("--shrink-time", *shrink_s, "Time allowed for shrinking a failure, in seconds (default 20)")
-        ->check(CLI::NonNegativeNumber);
-    auto* case_opt = cmd->add_option("--case", *only_case, "Run only case N of the schedule (to replay a report)");
-    cmd->add_option("--svg", *svg, "On a failure, draw the counterexample into FILE (SVG)");
+        ->check(CLI::NonNegativeNumber)
+        ->type_name("T");
+    auto* case_opt = cmd->add_option("--case", *only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
+    cmd->add_option("--svg", *svg, "On a failure, draw the counterexample into FILE (SVG)")->type_name("FILE");
     cmd->callback([&action, options, cases, cases_opt, time_s, time_opt, timeout_ms, shrink_s, only_case, case_opt,
                    svg] {
         action = [=] {
