@@ -54,8 +54,9 @@ void write_svg(const std::string& path, const DiffOptions& options, const Counte
 }  // namespace
 
 void add_diff_command(CLI::App& app, Action& action) {
-    auto* cmd = app.add_subcommand("diff", "Differential fuzzing: run CMD on generated graphs, compare with the "
-                                           "reference, shrink the first failure");
+    auto* cmd = app.add_subcommand("diff",
+                                   "Differential fuzzing: run CMD on generated graphs, compare with the "
+                                   "reference, shrink the first failure");
     cmd->footer(kFooter);
     auto options = std::make_shared<DiffOptions>();
     auto cases = std::make_shared<std::size_t>(200);
@@ -67,7 +68,8 @@ void add_diff_command(CLI::App& app, Action& action) {
     cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")
         ->required()
         ->type_name("CMD");
-    auto* cases_opt = cmd->add_option("--cases", *cases, "Number of cases (default 200; unlimited with --time)")->type_name("N");
+    auto* cases_opt =
+        cmd->add_option("--cases", *cases, "Number of cases (default 200; unlimited with --time)")->type_name("N");
     cmd->add_option("--seed", options->seed, "Seed of the case schedule (default 1)")->type_name("S");
     auto* time_opt = cmd->add_option("--time", *time_s, "Stop looking for a failure after T seconds")
                          ->check(CLI::PositiveNumber)
@@ -75,39 +77,41 @@ void add_diff_command(CLI::App& app, Action& action) {
     cmd->add_option("--max-vertices", options->max_vertices, "Largest graph size asked of the generators (default 60)")
         ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))
         ->type_name("K");
-    cmd->add_flag("--stream", options->stream, "Start \"CMD --stream\" once; one graph per line in, one answer per line out");
+    cmd->add_flag("--stream", options->stream,
+                  "Start \"CMD --stream\" once; one graph per line in, one answer per line out");
     cmd->add_option("--timeout-ms", *timeout_ms, "Time allowed per case, in milliseconds (default 5000)")
         ->check(CLI::Range(1L, 86400000L))
         ->type_name("M");
     cmd->add_option("--shrink-time", *shrink_s, "Time allowed for shrinking a failure, in seconds (default 20)")
         ->check(CLI::NonNegativeNumber)
         ->type_name("T");
-    auto* case_opt = cmd->add_option("--case", *only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
+    auto* case_opt =
+        cmd->add_option("--case", *only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
     cmd->add_option("--svg", *svg, "On a failure, draw the counterexample into FILE (SVG)")->type_name("FILE");
-    cmd->callback([&action, options, cases, cases_opt, time_s, time_opt, timeout_ms, shrink_s, only_case, case_opt,
-                   svg] {
-        action = [=] {
-            DiffOptions o = *options;
-            o.limits.timeout = std::chrono::milliseconds(*timeout_ms);
-            o.shrink_time = std::chrono::milliseconds(static_cast<long>(*shrink_s * 1000));
-            if (*time_opt) o.time = std::chrono::milliseconds(static_cast<long>(*time_s * 1000));
-            if (*cases_opt || !*time_opt) o.cases = *cases;  // --time alone: as many as fit
-            if (*case_opt) o.only_case = *only_case;
-            Progress progress;
-            if (::isatty(STDERR_FILENO) != 0) {
-                progress = [](const std::string& line) { std::fprintf(stderr, "\r\x1b[K%s", line.c_str()); };
-            }
-            const DiffResult result = run_diff(o, progress);
-            if (progress) std::fprintf(stderr, "\r\x1b[K");
-            std::string report = format_report(o, result);
-            if (result.failure && !svg->empty()) {
-                write_svg(*svg, o, *result.failure);
-                report += "drawn in " + *svg + "\n";
-            }
-            write_stdout(report);
-            return result.failure ? kExitInvalid : kExitOk;
-        };
-    });
+    cmd->callback(
+        [&action, options, cases, cases_opt, time_s, time_opt, timeout_ms, shrink_s, only_case, case_opt, svg] {
+            action = [=] {
+                DiffOptions o = *options;
+                o.limits.timeout = std::chrono::milliseconds(*timeout_ms);
+                o.shrink_time = std::chrono::milliseconds(static_cast<long>(*shrink_s * 1000));
+                if (*time_opt) o.time = std::chrono::milliseconds(static_cast<long>(*time_s * 1000));
+                if (*cases_opt || !*time_opt) o.cases = *cases;  // --time alone: as many as fit
+                if (*case_opt) o.only_case = *only_case;
+                Progress progress;
+                if (::isatty(STDERR_FILENO) != 0) {
+                    progress = [](const std::string& line) { std::fprintf(stderr, "\r\x1b[K%s", line.c_str()); };
+                }
+                const DiffResult result = run_diff(o, progress);
+                if (progress) std::fprintf(stderr, "\r\x1b[K");
+                std::string report = format_report(o, result);
+                if (result.failure && !svg->empty()) {
+                    write_svg(*svg, o, *result.failure);
+                    report += "drawn in " + *svg + "\n";
+                }
+                write_stdout(report);
+                return result.failure ? kExitInvalid : kExitOk;
+            };
+        });
 }
 
 }  // namespace dcel::cli

@@ -21,19 +21,51 @@ namespace dcel::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr std::size_t kErrKeep = 4096;                          // stderr bytes kept for the report
-constexpr std::chrono::milliseconds kGrace{200};                 // to drain pipes after an exit
-constexpr std::chrono::milliseconds kPollSlice{50};             // to notice an exit while a grandchild holds the pipes
+constexpr std::size_t kErrKeep = 4096;               // stderr bytes kept for the report
+constexpr std::chrono::milliseconds kGrace{200};     // to drain pipes after an exit
+constexpr std::chrono::milliseconds kPollSlice{50};  // to notice an exit while a grandchild holds the pipes
 
 void close_fd(int& fd) {
     if (fd >= 0) ::close(fd);
     fd = -1;
 }
 
-// Writing to a child that stopped reading must fail with EPIPE, not kill us.
-void ignore_sigpipe() {
+// The process groups alive now (a one-shot run and a stream at most), so
+// that Ctrl-C or a kill of dcel does not leave a hanging command behind: the
+// children have their own group, which the terminal's SIGINT does not reach.
+volatile std::sig_atomic_t live_groups[4] = {0, 0, 0, 0};
+
+void remember_group(pid_t pid) {
+    for (volatile std::sig_atomic_t& slot : live_groups) {
+        if (slot == 0) {
+            slot = pid;
+            return;
+        }
+    }
+}
+void forget_group(pid_t pid) {
+    for (volatile std::sig_atomic_t& slot : live_groups) {
+        if (slot == pid) slot = 0;
+    }
+}
+
+extern "C" void kill_groups_and_die(int sig) {
+    for (volatile std::sig_atomic_t& slot : live_groups) {
+        if (slot != 0) ::kill(-static_cast<pid_t>(slot), SIGKILL);
+    }
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
+// Once: SIGPIPE ignored (writing to a child that stopped reading must fail
+// with EPIPE, not kill us); SIGINT, SIGTERM and SIGHUP take the children down
+// with us, unless they were ignored (nohup).
+void install_signal_handling() {
     static const bool once = [] {
         std::signal(SIGPIPE, SIG_IGN);
+        for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
+            if (std::signal(sig, kill_groups_and_die) == SIG_IGN) std::signal(sig, SIG_IGN);
+        }
         return true;
     }();
     (void)once;
@@ -59,7 +91,9 @@ Pipe make_pipe() {
     }
     return {fds[0], fds[1]};
 }
-void set_nonblocking(int fd) { ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK); }
+void set_nonblocking(int fd) {
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+}
 
 struct Child {
     pid_t pid = -1;
@@ -68,8 +102,9 @@ struct Child {
 
 // /bin/sh -c COMMAND in a new process group, with SIGPIPE back at its default
 // (an ignored signal stays ignored across exec) and no blocked signals.
+// SIGINT, SIGTERM and SIGHUP need no reset: a caught signal is reset by exec.
 Child spawn(const std::string& command) {
-    ignore_sigpipe();
+    install_signal_handling();
     Pipe in = make_pipe(), out = make_pipe(), err = make_pipe();
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
@@ -102,6 +137,7 @@ Child spawn(const std::string& command) {
         throw UsageError(std::string("cannot start /bin/sh: ") + std::strerror(rc));
     }
     for (int fd : {in.write, out.read, err.read}) set_nonblocking(fd);
+    remember_group(pid);
     return {pid, in.write, out.read, err.read};
 }
 
@@ -130,6 +166,7 @@ void finish(Child& c, ProcessResult& r, bool decided) {
     int status = 0;
     while (::waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
     }
+    forget_group(c.pid);
     if (!decided) {
         if (WIFSIGNALED(status)) {
             r.end = ProcessEnd::Signalled;
@@ -203,7 +240,8 @@ std::string describe_end(const ProcessResult& r, const ProcessLimits& limits) {
         case ProcessEnd::Exited: return "exit status " + std::to_string(r.exit_status);
         case ProcessEnd::Signalled: {
             const char* name = ::strsignal(r.signal);
-            return "killed by signal " + std::to_string(r.signal) + (name != nullptr ? std::string(" (") + name + ")" : "");
+            return "killed by signal " + std::to_string(r.signal) +
+                   (name != nullptr ? std::string(" (") + name + ")" : "");
         }
         case ProcessEnd::TimedOut:
             return "no answer within " + std::to_string(limits.timeout.count()) + " ms (killed with its process group)";

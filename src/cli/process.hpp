@@ -17,8 +17,8 @@
 namespace dcel::cli {
 
 struct ProcessLimits {
-    std::chrono::milliseconds timeout{10000};          // per run (per exchange with a stream)
-    std::size_t max_output = std::size_t{64} << 20;   // stdout bytes; beyond is a failure
+    std::chrono::milliseconds timeout{10000};        // per run (per exchange with a stream)
+    std::size_t max_output = std::size_t{64} << 20;  // stdout bytes; beyond is a failure
 };
 
 enum class ProcessEnd : std::uint8_t {
@@ -56,9 +56,9 @@ public:
     ~StreamProcess() { stop(); }
 
     struct Reply {
-        bool answered = false;   // line holds the answer (without its '\n')
+        bool answered = false;  // line holds the answer (without its '\n')
         std::string line;
-        ProcessResult failure;   // when not answered: how the process ended
+        ProcessResult failure;  // when not answered: how the process ended
     };
     // Writes `line` (which must not contain '\n') and a '\n', then waits for
     // the next non-blank line of output.
