@@ -138,6 +138,7 @@ TEST(CheckFaces, ExtraCycleForARepeatAnEmptyCycleAndTwoTurns) {
     r = show(compare_faces(d, a));
     EXPECT_EQ(count_kind(r, DifferenceKind::ExtraCycle), 1U);
     EXPECT_EQ(count_kind(r, DifferenceKind::MissingCycle), 1U);
+    ASSERT_NE(find_kind(r, DifferenceKind::ExtraCycle), nullptr);
     EXPECT_NE(find_kind(r, DifferenceKind::ExtraCycle)->message.find("2 times"), std::string::npos);
     EXPECT_EQ(r.differences.size(), 2U);
 }
@@ -327,6 +328,7 @@ TEST(CheckDump, WrongHole) {
     const Report r = show(compare_dump(d, renumbered(a, 4)));
     ASSERT_EQ(count_kind(r, DifferenceKind::WrongHole), 1U);
     const check::Difference* wrong = find_kind(r, DifferenceKind::WrongHole);
+    ASSERT_NE(wrong, nullptr);
     EXPECT_EQ(rotation_canonical(wrong->vertices), rotation_canonical({6, 8, 7}));
     EXPECT_NE(wrong->message.find("is a hole of the face bounded by [0, 1, 4, 5]"), std::string::npos);
     EXPECT_NE(wrong->message.find("but the answer puts it in answer face"), std::string::npos);
@@ -365,6 +367,7 @@ TEST(CheckDump, WrongIsolatedVertex) {
     a.faces[east.index()].isolated.push_back(VertexId(9));  // v9 moved to East
     Report r = show(compare_dump(d, renumbered(a, 6)));
     ASSERT_EQ(count_kind(r, DifferenceKind::WrongIsolatedVertex), 1U);
+    ASSERT_NE(find_kind(r, DifferenceKind::WrongIsolatedVertex), nullptr);
     EXPECT_EQ(find_kind(r, DifferenceKind::WrongIsolatedVertex)->vertices, (std::vector<Index>{9}));
     EXPECT_NE(find_kind(r, DifferenceKind::WrongIsolatedVertex)->message.find("isolated vertex v9 lies in the face bounded by [0, 1, 4, 5]"),
               std::string::npos);

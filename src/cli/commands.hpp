@@ -13,6 +13,9 @@ void add_build_command(CLI::App& app, Action& action);
 void add_locate_command(CLI::App& app, Action& action);
 void add_stab_command(CLI::App& app, Action& action);
 void add_edit_command(CLI::App& app, Action& action);
+void add_check_command(CLI::App& app, Action& action);
+void add_gen_command(CLI::App& app, Action& action);
+void add_render_command(CLI::App& app, Action& action);
 void add_diff_command(CLI::App& app, Action& action);
 
 }  // namespace dcel::cli

@@ -20,6 +20,9 @@ int main(int argc, char** argv) {
     add_locate_command(app, action);
     add_stab_command(app, action);
     add_edit_command(app, action);
+    add_check_command(app, action);
+    add_gen_command(app, action);
+    add_render_command(app, action);
     add_diff_command(app, action);
 
     try {

@@ -13,8 +13,8 @@ constexpr double kMargin = 36;
 constexpr double kTitleBand = 30;
 constexpr double kCaptionBand = 40;
 constexpr double kMinWidth = 360;  // room for the caption under thin drawings
-constexpr double kOffset = 3.5;    // a half-edge's distance from its edge, to its face's side
-constexpr double kHead = 7;        // arrowhead length
+constexpr double kOffset = 4.5;    // a half-edge's distance from its edge, to its face's side
+constexpr double kHead = 9;        // arrowhead length
 constexpr std::size_t kMaxLabels = 2000;  // beyond this, ids are unreadable anyway
 
 struct Xy {
@@ -32,8 +32,8 @@ public:
         if (!bounds(points, 1.0)) (void)bounds(points, 0.25);
         span_ = std::max(dx_, dy_);
         if (!(span_ > 0)) span_ = 1;  // one point, or all at one point
-        w_ = kDrawing * dx_ / span_;
-        h_ = kDrawing * dy_ / span_;
+        w_ = kDrawing * (dx_ / span_);  // the ratio first: 640 * 1e308 overflows
+        h_ = kDrawing * (dy_ / span_);
     }
     [[nodiscard]] double width() const { return std::max(w_ + 2 * kMargin, kMinWidth); }
     [[nodiscard]] double height() const { return h_ + 2 * kMargin + kTitleBand + kCaptionBand; }
@@ -118,7 +118,7 @@ void arrow(std::string& out, Xy a, Xy b, const std::string& colour, double width
     if (!(len > 1)) return;
     const double ux = dx / len, uy = dy / len;
     const double nx = uy * offset, ny = -ux * offset;  // the plane's left, with y flipped
-    const double trim = std::min(0.22 * len, 12.0);
+    const double trim = std::min(0.25 * len, 10.0 + offset);
     const Xy s{a.x + nx + ux * trim, a.y + ny + uy * trim};
     const Xy e{b.x + nx - ux * trim, b.y + ny - uy * trim};
     const double head = std::min(kHead + width, 0.45 * (len - 2 * trim));
@@ -182,7 +182,7 @@ void draw_highlights(std::string& out, const Dcel& d, const Frame& frame, const 
                        kWarning + "\" stroke-width=\"2.5\"/>\n";
                 continue;
             }
-            arrow(out, a, frame.at(d.point(VertexId(v))), kWarning, 3, kOffset);
+            arrow(out, a, frame.at(d.point(VertexId(v))), kWarning, 3, 2 * kOffset);  // beside the face's own arrows
         }
     }
     out += "</g>\n";
@@ -208,6 +208,10 @@ void draw_vertices(std::string& out, const Dcel& d, const Frame& frame) {
     out += "</g>\n";
 }
 
+std::string count(std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 }  // namespace
 
 std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
@@ -227,9 +231,9 @@ std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
     if (!options.title.empty()) {
         out += "<text x=\"12\" y=\"20\" font-size=\"14\" font-weight=\"bold\">" + escape(options.title) + "</text>\n";
     }
-    out += "<text x=\"12\" y=\"" + num(h - 24) + "\" font-size=\"11\">" + std::to_string(dcel.num_vertices()) +
-           " vertices, " + std::to_string(dcel.num_edges()) + " edges, " + std::to_string(dcel.num_faces() - 1) +
-           " bounded faces (tinted)</text>\n";
+    out += "<text x=\"12\" y=\"" + num(h - 24) + "\" font-size=\"11\">" + count(dcel.num_vertices(), "vertex", "vertices") +
+           ", " + count(dcel.num_edges(), "edge", "edges") + ", " +
+           count(dcel.num_faces() - 1, "bounded face", "bounded faces") + " (tinted)</text>\n";
     out += "<text x=\"12\" y=\"" + num(h - 10) + "\" font-size=\"11\">arrows: half-edges, on the side of their face;" +
            std::string(options.highlight_cycles.empty() ? "" : " red: highlighted cycles;") +
            " rings: isolated vertices</text>\n";
