@@ -213,7 +213,7 @@ Pump pump(Child& c, std::string_view& input, bool close_in, std::string& out, st
                 const ssize_t k = ::write(fd, input.data(), std::min<std::size_t>(input.size(), sizeof buffer));
                 if (k > 0) {
                     input.remove_prefix(static_cast<std::size_t>(k));
-                } else if (errno != EAGAIN && errno != EINTR) {
+                } else if (k < 0 && errno != EAGAIN && errno != EINTR) {
                     close_fd(fd);  // it stopped reading (EPIPE): its answer decides
                     input = {};
                 }
