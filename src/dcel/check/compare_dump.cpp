@@ -22,14 +22,14 @@ void compare_points(const Dcel& reference, const DcelDump& answer, detail::Colle
         out.add(DifferenceKind::VertexCount, "the answer has " + std::to_string(got) + " vertices, the graph " +
                                                  std::to_string(want));
     }
-    for (Index v = 0; v < std::min(want, got); ++v) {
-        const Point p = reference.point(VertexId(v));
+    for (std::size_t v = 0; v < std::min(want, got); ++v) {  // before validation: no 32-bit count assumed
+        const Point p = reference.points()[v];
         const Point q = answer.vertices[v];
         if (p == q || !out.wants(DifferenceKind::WrongPoint)) continue;
         out.add(DifferenceKind::WrongPoint,
                 "v" + std::to_string(v) + " is at " + format_point(q) + " in the answer, at " + format_point(p) +
                     " in the graph",
-                {v});
+                {static_cast<Index>(v)});
     }
 }
 
