@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     add_check_command(app, action);
     add_gen_command(app, action);
     add_render_command(app, action);
+    add_diff_command(app, action);
 
     try {
         app.parse(argc, argv);

@@ -1,0 +1,46 @@
+// Judging one run of the foreign command against the reference DCEL: agrees,
+// or fails in one of five ways. Two failures are "the same" when shrinking
+// may trade one for the other (see same_failure).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "dcel/check/compare.hpp"
+#include "dcel/dcel.hpp"
+#include "process.hpp"
+
+namespace dcel::cli {
+
+enum class FailureKind : std::uint8_t {
+    Crash,        // killed by a signal (or /bin/sh exited with 128 + its number)
+    NonZeroExit,  // exited with a status other than 0
+    Timeout,      // no answer within --timeout-ms
+    Unparsable,   // stdout is not a faces answer (empty, garbage, too large)
+    WrongAnswer,  // a faces answer that differs from the reference
+};
+
+[[nodiscard]] std::string_view failure_name(FailureKind k);  // "crash", "non-zero exit", ...
+
+struct Outcome {
+    bool agrees = true;
+    FailureKind kind = FailureKind::WrongAnswer;
+    std::string what;      // one line: the exit status, the parse error, the first difference
+    check::Report report;  // the differences, for a wrong answer
+    ProcessResult run;     // what the command did (a crash reported by sh as Signalled)
+};
+
+[[nodiscard]] Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits);
+
+// Same kind, and the same signal, exit status or kind of first difference.
+[[nodiscard]] bool same_failure(const Outcome& a, const Outcome& b);
+
+// "wrong answer (reversed-cycle)", "crash (signal 11)", "non-zero exit (status 1)", "timeout".
+[[nodiscard]] std::string failure_label(const Outcome& o);
+
+// At most max_bytes of text, printable: other bytes as \xNN, newlines as \n.
+[[nodiscard]] std::string printable(std::string_view text, std::size_t max_bytes);
+
+}  // namespace dcel::cli

@@ -1,0 +1,334 @@
+#include "process.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <functional>
+#include <thread>
+
+#include "cli_support.hpp"
+
+extern char** environ;  // NOLINT: POSIX declares it nowhere else
+
+namespace dcel::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr std::size_t kErrKeep = 4096;               // stderr bytes kept for the report
+constexpr std::chrono::milliseconds kGrace{200};     // to drain pipes after an exit
+constexpr std::chrono::milliseconds kPollSlice{50};  // to notice an exit while a grandchild holds the pipes
+
+void close_fd(int& fd) {
+    if (fd >= 0) ::close(fd);
+    fd = -1;
+}
+
+// The process groups alive now (a one-shot run and a stream at most), so
+// that Ctrl-C or a kill of dcel does not leave a hanging command behind: the
+// children have their own group, which the terminal's SIGINT does not reach.
+volatile std::sig_atomic_t live_groups[4] = {0, 0, 0, 0};
+
+void remember_group(pid_t pid) {
+    for (volatile std::sig_atomic_t& slot : live_groups) {
+        if (slot == 0) {
+            slot = pid;
+            return;
+        }
+    }
+}
+void forget_group(pid_t pid) {
+    for (volatile std::sig_atomic_t& slot : live_groups) {
+        if (slot == pid) slot = 0;
+    }
+}
+
+extern "C" void kill_groups_and_die(int sig) {
+    for (volatile std::sig_atomic_t& slot : live_groups) {
+        if (slot != 0) ::kill(-static_cast<pid_t>(slot), SIGKILL);
+    }
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+}
+
+// Once: SIGPIPE ignored (writing to a child that stopped reading must fail
+// with EPIPE, not kill us); SIGINT, SIGTERM and SIGHUP take the children down
+// with us, unless they were ignored (nohup).
+void install_signal_handling() {
+    static const bool once = [] {
+        std::signal(SIGPIPE, SIG_IGN);
+        for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
+            if (std::signal(sig, kill_groups_and_die) == SIG_IGN) std::signal(sig, SIG_IGN);
+        }
+        return true;
+    }();
+    (void)once;
+}
+
+// A close-on-exec pipe whose ends are above 2, so that dup2 onto 0, 1, 2 in
+// the child never maps an end onto itself (which would keep close-on-exec).
+struct Pipe {
+    int read = -1, write = -1;
+};
+int above_stdio(int fd) {
+    if (fd > 2) return fd;
+    const int high = ::fcntl(fd, F_DUPFD_CLOEXEC, 3);
+    ::close(fd);
+    return high;
+}
+Pipe make_pipe() {
+    int fds[2];
+    if (::pipe(fds) != 0) throw UsageError(std::string("cannot create a pipe: ") + std::strerror(errno));
+    for (int& fd : fds) {
+        ::fcntl(fd, F_SETFD, FD_CLOEXEC);
+        fd = above_stdio(fd);
+    }
+    return {fds[0], fds[1]};
+}
+void set_nonblocking(int fd) {
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+}
+
+struct Child {
+    pid_t pid = -1;
+    int in = -1, out = -1, err = -1;
+};
+
+// /bin/sh -c COMMAND in a new process group, with SIGPIPE back at its default
+// (an ignored signal stays ignored across exec) and no blocked signals.
+// SIGINT, SIGTERM and SIGHUP need no reset: a caught signal is reset by exec.
+Child spawn(const std::string& command) {
+    install_signal_handling();
+    Pipe in = make_pipe(), out = make_pipe(), err = make_pipe();
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, in.read, 0);
+    posix_spawn_file_actions_adddup2(&actions, out.write, 1);
+    posix_spawn_file_actions_adddup2(&actions, err.write, 2);
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+    posix_spawnattr_setpgroup(&attr, 0);
+    sigset_t set;
+    sigemptyset(&set);
+    posix_spawnattr_setsigmask(&attr, &set);
+    sigaddset(&set, SIGPIPE);
+    posix_spawnattr_setsigdefault(&attr, &set);
+
+    std::string sh = "/bin/sh", dash_c = "-c", cmd = command;
+    char* argv[] = {sh.data(), dash_c.data(), cmd.data(), nullptr};
+    pid_t pid = -1;
+    const int rc = ::posix_spawn(&pid, "/bin/sh", &actions, &attr, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attr);
+    ::close(in.read);
+    ::close(out.write);
+    ::close(err.write);
+    if (rc != 0) {
+        ::close(in.write);
+        ::close(out.read);
+        ::close(err.read);
+        throw UsageError(std::string("cannot start /bin/sh: ") + std::strerror(rc));
+    }
+    for (int fd : {in.write, out.read, err.read}) set_nonblocking(fd);
+    remember_group(pid);
+    return {pid, in.write, out.read, err.read};
+}
+
+// Has the child exited? Does not reap it: while it is a zombie its pid, and
+// so its process group id, cannot be reused, which makes kill(-pid) safe.
+bool has_exited(pid_t pid) {
+    siginfo_t info;
+    std::memset(&info, 0, sizeof info);
+    return ::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOHANG | WNOWAIT) == 0 && info.si_pid == pid;
+}
+
+bool wait_exit(pid_t pid, Clock::time_point deadline) {
+    std::chrono::microseconds nap{100};
+    while (!has_exited(pid)) {
+        if (Clock::now() >= deadline) return false;
+        std::this_thread::sleep_for(nap);
+        nap = std::min<std::chrono::microseconds>(nap * 2, std::chrono::milliseconds(5));
+    }
+    return true;
+}
+
+// Kills what is left of the child's group, reaps the child, closes our ends.
+// Fills end/exit_status/signal unless the caller already decided the end.
+void finish(Child& c, ProcessResult& r, bool decided) {
+    ::kill(-c.pid, SIGKILL);
+    int status = 0;
+    while (::waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    forget_group(c.pid);
+    if (!decided) {
+        if (WIFSIGNALED(status)) {
+            r.end = ProcessEnd::Signalled;
+            r.signal = WTERMSIG(status);
+        } else {
+            r.end = ProcessEnd::Exited;
+            r.exit_status = WEXITSTATUS(status);
+        }
+    }
+    close_fd(c.in);
+    close_fd(c.out);
+    close_fd(c.err);
+    c.pid = -1;
+    if (r.err_tail.size() > kErrKeep) r.err_tail.erase(0, r.err_tail.size() - kErrKeep);
+}
+
+enum class Pump : std::uint8_t { Done, OutputClosed, Deadline, TooMuchOutput };
+
+// Moves bytes: `input` into the child's stdin (closed once written when
+// close_in), its stdout into `out`, its stderr into `err` (trimmed), until
+// done() holds, both outputs are closed, the deadline passes, or `out` grows
+// past max_out.
+Pump pump(Child& c, std::string_view& input, bool close_in, std::string& out, std::string& err,
+          Clock::time_point deadline, std::size_t max_out, const std::function<bool()>& done) {
+    char buffer[1 << 16];
+    for (;;) {
+        if (done && done()) return Pump::Done;
+        if (close_in && input.empty()) close_fd(c.in);
+        pollfd fds[3];
+        nfds_t n = 0;
+        int* owner[3];
+        if (c.in >= 0 && !input.empty()) fds[n] = {c.in, POLLOUT, 0}, owner[n++] = &c.in;
+        if (c.out >= 0) fds[n] = {c.out, POLLIN, 0}, owner[n++] = &c.out;
+        if (c.err >= 0) fds[n] = {c.err, POLLIN, 0}, owner[n++] = &c.err;
+        if (n == 0 || (c.out < 0 && c.err < 0)) return Pump::OutputClosed;
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+        if (left.count() <= 0) return Pump::Deadline;
+        const int rc = ::poll(fds, n, static_cast<int>(std::min(left, kPollSlice).count()));
+        if (rc < 0 && errno != EINTR) throw UsageError(std::string("poll failed: ") + std::strerror(errno));
+        for (nfds_t i = 0; rc > 0 && i < n; ++i) {
+            if (fds[i].revents == 0) continue;
+            int& fd = *owner[i];
+            if (&fd == &c.in) {
+                const ssize_t k = ::write(fd, input.data(), std::min<std::size_t>(input.size(), sizeof buffer));
+                if (k > 0) {
+                    input.remove_prefix(static_cast<std::size_t>(k));
+                } else if (k < 0 && errno != EAGAIN && errno != EINTR) {
+                    close_fd(fd);  // it stopped reading (EPIPE): its answer decides
+                    input = {};
+                }
+                continue;
+            }
+            const ssize_t k = ::read(fd, buffer, sizeof buffer);
+            if (k == 0 || (k < 0 && errno != EAGAIN && errno != EINTR)) {
+                close_fd(fd);
+            } else if (k > 0 && &fd == &c.out) {
+                out.append(buffer, static_cast<std::size_t>(k));
+                if (out.size() > max_out) return Pump::TooMuchOutput;
+            } else if (k > 0) {
+                err.append(buffer, static_cast<std::size_t>(k));
+                if (err.size() > 16 * kErrKeep) err.erase(0, err.size() - kErrKeep);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+std::string describe_end(const ProcessResult& r, const ProcessLimits& limits) {
+    switch (r.end) {
+        case ProcessEnd::Exited: return "exit status " + std::to_string(r.exit_status);
+        case ProcessEnd::Signalled: {
+            const char* name = ::strsignal(r.signal);
+            return "killed by signal " + std::to_string(r.signal) +
+                   (name != nullptr ? std::string(" (") + name + ")" : "");
+        }
+        case ProcessEnd::TimedOut:
+            return "no answer within " + std::to_string(limits.timeout.count()) + " ms (killed with its process group)";
+        case ProcessEnd::OutputTooLarge:
+            return "more than " + std::to_string(limits.max_output) + " bytes on stdout (killed)";
+    }
+    return "?";
+}
+
+ProcessResult run_command(const std::string& command, std::string_view input, const ProcessLimits& limits) {
+    const Clock::time_point deadline = Clock::now() + limits.timeout;
+    Child c = spawn(command);
+    ProcessResult r;
+    Pump p = pump(c, input, true, r.out, r.err_tail, deadline, limits.max_output, [&] { return has_exited(c.pid); });
+    if (p == Pump::Done) {
+        // Exited: take what is still in the pipes. A grandchild may hold them
+        // open, so only for a moment.
+        p = pump(c, input, true, r.out, r.err_tail, std::min(deadline, Clock::now() + kGrace), limits.max_output, {});
+        if (p == Pump::Deadline) p = Pump::OutputClosed;
+    } else if (p == Pump::OutputClosed && !wait_exit(c.pid, deadline)) {
+        p = Pump::Deadline;  // closed its output but kept running
+    }
+    if (p == Pump::Deadline) r.end = ProcessEnd::TimedOut;
+    if (p == Pump::TooMuchOutput) r.end = ProcessEnd::OutputTooLarge;
+    finish(c, r, p == Pump::Deadline || p == Pump::TooMuchOutput);
+    return r;
+}
+
+void StreamProcess::start() {
+    const Child c = spawn(command_);
+    pid_ = c.pid;
+    in_ = c.in;
+    out_ = c.out;
+    err_ = c.err;
+    pending_.clear();
+    ++starts_;
+}
+
+StreamProcess::Reply StreamProcess::exchange(std::string_view line) {
+    if (pid_ < 0) start();
+    const Clock::time_point deadline = Clock::now() + limits_.timeout;
+    std::string payload(line);
+    payload += '\n';
+    std::string_view input = payload;
+    Reply reply;
+    std::string err;
+    // The next non-blank line in pending_, taken out of it.
+    auto take_line = [&] {
+        for (std::size_t nl; (nl = pending_.find('\n')) != std::string::npos;) {
+            std::string candidate = pending_.substr(0, nl);
+            pending_.erase(0, nl + 1);
+            if (candidate.find_first_not_of(" \t\r") != std::string::npos) {
+                reply.line = std::move(candidate);
+                return true;
+            }
+        }
+        return false;
+    };
+    Child c{pid_, in_, out_, err_};
+    Pump p = pump(c, input, false, pending_, err, deadline, limits_.max_output, take_line);
+    in_ = c.in, out_ = c.out, err_ = c.err;
+    if (p == Pump::Done) {
+        reply.answered = true;
+        return reply;
+    }
+    if (p == Pump::OutputClosed && !wait_exit(pid_, deadline)) p = Pump::Deadline;
+    if (p == Pump::Deadline) reply.failure.end = ProcessEnd::TimedOut;
+    if (p == Pump::TooMuchOutput) reply.failure.end = ProcessEnd::OutputTooLarge;
+    reply.failure.out = std::move(pending_);
+    reply.failure.err_tail = std::move(err);
+    finish(c, reply.failure, p == Pump::Deadline || p == Pump::TooMuchOutput);
+    pid_ = in_ = out_ = err_ = -1;
+    pending_.clear();
+    return reply;
+}
+
+void StreamProcess::stop() {
+    if (pid_ < 0) return;
+    Child c{pid_, in_, out_, err_};
+    close_fd(c.in);  // end of input: a well-behaved stream exits now
+    std::string_view none;
+    std::string sink_out, sink_err;
+    (void)pump(c, none, true, sink_out, sink_err, Clock::now() + kGrace, limits_.max_output, {});
+    ProcessResult ignored;
+    finish(c, ignored, false);
+    pid_ = in_ = out_ = err_ = -1;
+    pending_.clear();
+}
+
+}  // namespace dcel::cli
