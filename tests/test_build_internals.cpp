@@ -193,6 +193,36 @@ TEST(RingSort, SmallRingsWhereTheFloatingPointGuessIsWrong) {
     }
 }
 
+TEST(RingSort, RingsOfTwoInEveryArrangement) {
+    // Degree 2 has its own path: both orders of the input, same and
+    // different quadrants, the same direction (either id first), opposite
+    // directions, and pairs ~1e-31 rad apart, from nasty centres too.
+    std::mt19937_64 rng(12);
+    const double o = 1e15;
+    const std::vector<std::pair<Point, Point>> fixed = {
+        {{1, 0}, {0, 1}},         {{1, 1}, {2, 2}},         {{-1, -1}, {-3, -3}},    {{1, 0}, {-1, 0}},
+        {{0, 1}, {0, -1}},        {{o, o + 1}, {o + 1, o + 2}}, {{-o, -o - 1}, {-o - 1, -o - 2}},
+        {{1, -1}, {2, -1}},       {{0, -1}, {0, -2}},       {{-1, 0}, {-2, 0}},      {{2, 1}, {1, 2}}};
+    for (const auto& [a, b] : fixed) {
+        for (const bool swap_ids : {false, true}) {
+            const HalfEdgeId ia(swap_ids ? 1 : 0);
+            const HalfEdgeId ib(swap_ids ? 0 : 1);
+            expect_ring_sorted({0, 0}, {{a, ia, 0, 0}, {b, ib, 0, 0}});
+            expect_ring_sorted({0, 0}, {{b, ib, 0, 0}, {a, ia, 0, 0}});
+        }
+    }
+    for (int round = 0; round < 3000; ++round) {
+        const Point c{nasty_double(rng), nasty_double(rng)};
+        const Point a{nasty_double(rng), nasty_double(rng)};
+        Point b = round % 3 == 0 ? Point{c.x + 2 * (a.x - c.x), c.y + 2 * (a.y - c.y)}  // often the same way
+                                 : Point{nasty_double(rng), nasty_double(rng)};
+        if (!std::isfinite(b.x) || !std::isfinite(b.y)) b = Point{nasty_double(rng), nasty_double(rng)};
+        if (a == c || b == c) continue;
+        expect_ring_sorted(c, {{a, HalfEdgeId(static_cast<Index>(round % 2)), 0, 0},
+                               {b, HalfEdgeId(static_cast<Index>(1 - round % 2)), 0, 0}});
+    }
+}
+
 // ---- Status list
 
 TEST(StatusList, AgreesWithAVectorUnderRandomEdits) {

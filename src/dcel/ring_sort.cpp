@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "dcel/geometry/predicates.hpp"
@@ -94,6 +95,19 @@ std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
     for (RingEntry& e : ring) e.quadrant = quadrant_of(centre, e.target);
     const ExactLess exact{centre};
     const std::size_t n = ring.size();
+    if (n == 2) {
+        // Most vertices of chains, forests and polygons: the exact
+        // comparator once (different quadrants need no orient2d at all).
+        if (ring[0].quadrant != ring[1].quadrant) {
+            if (ring[1].quadrant < ring[0].quadrant) std::swap(ring[0], ring[1]);
+            return 2;
+        }
+        const Sign s = orient2d(centre, ring[0].target, ring[1].target);  // positive: ring[0] first
+        if (s == Sign::Negative || (s == Sign::Zero && ring[1].half_edge < ring[0].half_edge)) {
+            std::swap(ring[0], ring[1]);
+        }
+        return s == Sign::Zero ? 0 : 2;
+    }
     if (n > 24) {
         // Large rings (a star's centre): std::sort on integer keys (quadrant,
         // 30 bits of the guess, position), then the same exact confirmation.

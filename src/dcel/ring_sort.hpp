@@ -4,8 +4,9 @@
 // Each direction first gets its quadrant from coordinate comparisons
 // ([0, pi/2), [pi/2, pi), [pi, 3pi/2), [3pi/2, 2pi)); two directions in one
 // quadrant are less than pi/2 apart, so orient2d decides between them. This
-// is the order compare_angle gives, with fewer orient2d calls. Rings are
-// first ordered by a floating-point guess at the angle (a branch-free
+// is the order compare_angle gives, with fewer orient2d calls. A ring of two
+// (most vertices of chains, polygons and trees) gets the exact comparator
+// once. Larger rings are first ordered by a floating-point guess at the angle (a branch-free
 // network up to 8 entries, insertion sort up to 24, std::sort on integer
 // keys above), then confirmed with one orient2d per adjacent pair; when the
 // guess was wrong anywhere, the ring is sorted again exactly.

@@ -54,8 +54,9 @@ public:
         : rg_(rg), g_(g), check_(check), node_of_slot_(rg.num_slots(), kNoIndex), spans_(g.edges.size()),
           status_(static_cast<Index>(g.edges.size())) {}
 
-    // One event per vertex, in rank order: O(degree) list work, plus one
-    // O(log n) search when no edge arrives from the left, plus O(1)
+    // One event per vertex, in rank order: O(degree) list work, plus, when
+    // no edge arrives from the left, a walk of a few steps from the previous
+    // vertex's place (near_hint) or else one O(log n) search, plus O(1)
     // predicate calls for the checks.
     void run(std::span<const char> wanted, std::span<Index> below) {
         for (Index r = 0; r < rg_.num_vertices(); ++r) visit(r, wanted, below);
@@ -111,8 +112,9 @@ private:
         // `above` must be the first active edge not below p (what a search
         // would find). The candidates are that exactly when `below` is below
         // p and `above` is not; otherwise, and when nothing ended here, search.
-        if (!any_ending || (below != StatusList::kNone && !below_point(below, p)) ||
-            (above != StatusList::kNone && below_point(above, p))) {
+        if ((!any_ending || (below != StatusList::kNone && !below_point(below, p)) ||
+             (above != StatusList::kNone && below_point(above, p))) &&
+            !near_hint(p, below, above)) {
             above = status_.first_not_below([&](Index e) { return below_point(e, p); });
             below = above == StatusList::kNone ? status_.last() : status_.prev(above);
         }
@@ -124,8 +126,18 @@ private:
         // Edges starting here enter bottom to top: the ring lists directions
         // counterclockwise from east, so those in the lower half-plane (the
         // ring's second half) come first, then those in the upper one.
-        Index split = ring_begin;
-        while (split < ring_end && angular_half(p, rg_.point[rg_.target[split]]) == 0) ++split;
+        // Edges ending here point into (pi/2, 3pi/2] and starting ones into
+        // (-pi/2, pi/2], so the ending ones form one run of the ring, and
+        // the starting edges after it are exactly those in the lower half:
+        // the split is found from ranks alone when anything ends here.
+        Index split = ring_end;
+        for (Index s = ring_end; s > ring_begin; --s) {
+            if (rg_.target[s - 1] < r) break;
+            split = s - 1;
+        }
+        if (split == ring_begin) {  // nothing ends here
+            while (split < ring_end && angular_half(p, rg_.point[rg_.target[split]]) == 0) ++split;
+        }
         Index lowest_new = StatusList::kNone;
         Index last = below;
         auto insert_starting = [&](Index s) {
@@ -140,6 +152,7 @@ private:
         };
         for (Index s = split; s < ring_end; ++s) insert_starting(s);
         for (Index s = ring_begin; s < split; ++s) insert_starting(s);
+        hint_ = last != StatusList::kNone ? last : above;
 
         if (!check_) return;
         if (lowest_new == StatusList::kNone) {
@@ -148,6 +161,41 @@ private:
             if (below != StatusList::kNone) check_pair(below, lowest_new);
             if (above != StatusList::kNone) check_pair(last, above);
         }
+    }
+
+    // The place of p found from the node the previous vertex left in hint_,
+    // within a few steps along the status: the pair (below, above) of
+    // neighbours with `below` below p and `above` not (kNone past either
+    // end). In a status partitioned by below_point there is exactly one such
+    // pair, the one the full search finds; consecutive vertices of nested
+    // polygons and of edges that share a column meet it in one or two
+    // orient2d calls. Returns false (nothing set) when the walk runs out.
+    bool near_hint(Point p, Index& below, Index& above) const {
+        constexpr int kSteps = 12;
+        Index h = hint_;
+        if (h == StatusList::kNone || !status_.contains(h)) return false;
+        if (below_point(h, p)) {
+            for (int step = 0; step < kSteps; ++step) {
+                const Index n = status_.next(h);
+                if (n == StatusList::kNone || !below_point(n, p)) {
+                    below = h;
+                    above = n;
+                    return true;
+                }
+                h = n;
+            }
+        } else {
+            for (int step = 0; step < kSteps; ++step) {
+                const Index b = status_.prev(h);
+                if (b == StatusList::kNone || below_point(b, p)) {
+                    below = b;
+                    above = h;
+                    return true;
+                }
+                h = b;
+            }
+        }
+        return false;
     }
 
     // Throws when the edges of nodes ns and nt meet other than at a shared
@@ -198,6 +246,7 @@ private:
     std::vector<Span> spans_;          // by node
     StatusList status_;
     Index next_node_ = 0;
+    Index hint_ = StatusList::kNone;  // a node near the previous vertex, see near_hint
 };
 
 }  // namespace
