@@ -12,7 +12,9 @@
 #include <string_view>
 #include <variant>
 
+#include "dcel/build.hpp"
 #include "dcel/error.hpp"
+#include "dcel/queries.hpp"
 #include "dcel/io/dcel_json.hpp"
 
 namespace dcel::io {
@@ -145,6 +147,18 @@ TEST(WriteFaces, ExactText) {
     EXPECT_EQ(write_faces(cycles), "{\"faces\": [[0, 1, 2], [0, 2, 1]]}\n");
     EXPECT_EQ(write_faces({}), "{\"faces\": []}\n");
     EXPECT_EQ(write_faces({{}, {VertexId(3)}, {VertexId()}}), "{\"faces\": [[], [3], [null]]}\n");
+}
+
+TEST(WriteFaces, StraightFromTheDcelMatchesTheListedCycles) {
+    // A square with a diagonal, a hole segment and an isolated vertex.
+    PlanarGraph g;
+    g.vertices = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 2}, {2, 3}, {3, 1}};
+    for (const auto& [u, v] : std::vector<std::pair<Index, Index>>{{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {4, 5}}) {
+        g.edges.push_back({VertexId(u), VertexId(v)});
+    }
+    const Dcel d = build(g);
+    EXPECT_EQ(write_faces_of(d), write_faces(boundary_cycles(d)));
+    EXPECT_EQ(write_faces_of(build(PlanarGraph{})), "{\"faces\": []}\n");
 }
 
 // ------------------------------------------------------------- round trips

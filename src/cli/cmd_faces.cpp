@@ -3,7 +3,6 @@
 #include "commands.hpp"
 #include "dcel/build.hpp"
 #include "dcel/io/dcel_json.hpp"
-#include "dcel/queries.hpp"
 
 namespace dcel::cli {
 
@@ -15,7 +14,7 @@ void add_faces_command(CLI::App& app, Action& action) {
         action = [path] {
             const PlanarGraph g = load_graph(*path);
             const Dcel d = with_source(*path, [&] { return build(g); });
-            write_stdout(io::write_faces(boundary_cycles(d)));
+            write_stdout(io::write_faces_of(d));
             return kExitOk;
         };
     });

@@ -1,189 +1,284 @@
 #include "dcel/build.hpp"
 
 #include <algorithm>
-#include <numeric>
+#include <utility>
 
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/input_checks.hpp"
+#include "dcel/lex_order.hpp"
+#include "dcel/rank_graph.hpp"
 #include "dcel/sweep.hpp"
 
 namespace dcel {
+namespace {
+
+// Frees a vector's memory now (clear() keeps the capacity).
+template <class T>
+void release(std::vector<T>& v) {
+    std::vector<T>().swap(v);
+}
+
+}  // namespace
 
 // Friend of Dcel: fills its arrays. One member function per step, in order.
+//
+// Every step but the last two works on the rank graph (vertices renumbered in
+// sweep order, half-edges grouped by origin in slots), where neighbouring
+// vertices sit close in memory; only the final writes go to the half-edge ids
+// of the input, which may be in any order. Temporaries are freed as soon as
+// they are dead, and the DCEL arrays are allocated last, so that the peak
+// stays near the size of the result.
 class DcelBuilder {
 public:
     DcelBuilder(const PlanarGraph& g, const BuildOptions& options) : g_(g), options_(options) {}
 
     Dcel run() {
-        check_elements(g_);
-        lex_order_ = sort_vertices_checked(g_);
-        rings_ = sort_rings_checked(g_);
-        link_next();
-        find_cycles();
-        find_components();
-        place_faces();
-        fill_vertices();
-        d_.points_ = g_.vertices;
+        check_elements(g_);                                        // O(V + E)
+        rg_ = rank_graph_checked(g_, lex_order_checked(g_.vertices));  // O(V + E log d); sort O(V log V) worst
+        find_components();                                         // O((V + E) alpha)
+        find_edges_below();                                        // sweep: O((V + E) log(V + E))
+        link_slots();                                              // O(E), O(E log d) worst
+        find_cycles();                                             // O(E)
+        place_components();                                        // O(V)
+        number_faces();                                            // O(E)
+        write_half_edges();                                        // O(E)
+        write_faces();                                             // O(F + holes log holes)
+        d_.points_ = g_.vertices;                                  // O(V)
         return std::move(d_);
     }
 
 private:
-    [[nodiscard]] Index num_vertices() const { return static_cast<Index>(g_.vertices.size()); }
-    [[nodiscard]] Index num_half_edges() const { return static_cast<Index>(2 * g_.edges.size()); }
-    [[nodiscard]] Point point(VertexId v) const { return g_.vertices[v.index()]; }
-    [[nodiscard]] VertexId origin(HalfEdgeId h) const { return graph_origin(g_, h); }
-    [[nodiscard]] VertexId target(HalfEdgeId h) const { return graph_target(g_, h); }
+    [[nodiscard]] Index num_slots() const { return rg_.num_slots(); }
 
-    // next(u->v) = the half-edge leaving v just clockwise of v->u.
-    void link_next() {
-        std::vector<Index> ring_position(num_half_edges());
-        for (Index v = 0; v < num_vertices(); ++v) {
-            for (Index i = rings_.offset[v]; i < rings_.offset[v + 1]; ++i) {
-                ring_position[rings_.ring[i].index()] = i - rings_.offset[v];
-            }
-        }
-        d_.origin_.resize(num_half_edges());
-        d_.next_.resize(num_half_edges());
-        d_.prev_.resize(num_half_edges());
-        for (Index h = 0; h < num_half_edges(); ++h) {
-            const HalfEdgeId he(h);
-            d_.origin_[h] = origin(he);
-            const HalfEdgeId back = twin(he);
-            const Index v = origin(back).index();
-            const Index degree = rings_.offset[v + 1] - rings_.offset[v];
-            const Index i = ring_position[back.index()];
-            const HalfEdgeId n = rings_.ring[rings_.offset[v] + (i + degree - 1) % degree];
-            d_.next_[h] = n;
-            d_.prev_[n.index()] = he;
-        }
-    }
-
-    // Cycles are numbered in order of their smallest half-edge.
-    void find_cycles() {
-        cycle_of_.assign(num_half_edges(), kNoIndex);
-        for (Index h = 0; h < num_half_edges(); ++h) {
-            if (cycle_of_[h] != kNoIndex) continue;
-            const auto c = static_cast<Index>(cycle_rep_.size());
-            cycle_rep_.push_back(HalfEdgeId(h));
-            for (Index x = h; cycle_of_[x] == kNoIndex; x = d_.next_[x].index()) cycle_of_[x] = c;
-        }
-    }
-
-    static Index find_root(std::vector<Index>& parent, Index x) {
-        while (parent[x] != x) {
-            parent[x] = parent[parent[x]];  // path halving
-            x = parent[x];
-        }
-        return x;
-    }
-
-    // Components are numbered in sweep order of their leftmost vertex. The
-    // outer cycle of a component passes through that vertex, on the side of
-    // the wedge that contains the direction west.
+    // Union-find on ranks, the larger root linked under the smaller, so each
+    // component's root is its leftmost vertex. Afterwards component_[r] is
+    // the component of rank r; components are numbered in sweep order of
+    // their leftmost vertex.
     void find_components() {
-        std::vector<Index> parent(num_vertices());
-        std::iota(parent.begin(), parent.end(), 0);
-        for (const GraphEdge& e : g_.edges) {
-            const Index a = find_root(parent, e.u.index());
-            const Index b = find_root(parent, e.v.index());
-            if (a != b) parent[std::max(a, b)] = std::min(a, b);
-        }
-        std::vector<Index> component_of_root(num_vertices(), kNoIndex);
-        component_of_.resize(num_vertices());
-        for (const VertexId v : lex_order_) {
-            const Index root = find_root(parent, v.index());
-            if (component_of_root[root] == kNoIndex) {
-                component_of_root[root] = static_cast<Index>(leftmost_.size());
-                leftmost_.push_back(v);
+        const Index n = rg_.num_vertices();
+        component_.resize(n);
+        for (Index r = 0; r < n; ++r) component_[r] = r;
+        auto root = [&](Index x) {
+            while (component_[x] != x) x = component_[x] = component_[component_[x]];  // path halving
+            return x;
+        };
+        for (Index r = 0; r < n; ++r) {
+            for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
+                if (rg_.target[s] > r) continue;  // each edge once, from its right end
+                const Index a = root(r);
+                const Index b = root(rg_.target[s]);
+                if (a != b) component_[std::max(a, b)] = std::min(a, b);
             }
-            component_of_[v.index()] = component_of_root[root];
         }
+        // Parents are smaller than children, so one ascending pass makes
+        // every entry its root, and a second (in place) turns roots into
+        // component numbers.
+        for (Index r = 0; r < n; ++r) component_[r] = component_[component_[r]];
+        for (Index r = 0; r < n; ++r) {
+            if (component_[r] == r) {
+                component_[r] = static_cast<Index>(leftmost_.size());
+                leftmost_.push_back(r);
+                if (rg_.degree(r) == 0) ++isolated_count_;
+            } else {
+                component_[r] = component_[component_[r]];
+            }
+        }
+    }
+
+    // next_slot_[s]: the slot of next(half_edge[s]), the half-edge leaving
+    // target(s) just clockwise of the twin. Twins are found from the small
+    // ring's side: a slot pointing into a small ring scans it (and then also
+    // links the twin, which points into this ring); only an edge between two
+    // large rings needs a binary search. O(E) with no scattered memory
+    // access whatever the input order; O(E log d) at worst.
+    void link_slots() {
+        next_slot_.assign(num_slots(), kNoIndex);
+        for (Index r = 0; r < rg_.num_vertices(); ++r) {
+            const bool r_small = rg_.small(r);
+            for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
+                const Index t = rg_.target[s];
+                if (rg_.small(t)) {
+                    const Index twin_slot = rg_.slot_towards(t, r);
+                    next_slot_[s] = rg_.clockwise(t, twin_slot);
+                    if (!r_small) next_slot_[twin_slot] = rg_.clockwise(r, s);
+                } else if (!r_small) {
+                    next_slot_[s] = rg_.clockwise(t, rg_.slot_towards(t, r));
+                }  // else: set from t's large ring
+            }
+        }
+    }
+
+    // Cycles are found in slot order; cycle_rep_[c] is the smallest half-edge
+    // id on cycle c (the one that names it in the result).
+    void find_cycles() {
+        cycle_of_slot_.assign(num_slots(), kNoIndex);
+        const std::size_t edges = g_.edges.size();
+        const std::size_t with_edges = leftmost_.size() - isolated_count_;
+        // Euler: a planar embedding has E - V + isolated + 2 * (components with edges) cycles.
+        const std::size_t expected = edges + isolated_count_ + 2 * with_edges;
+        if (expected >= g_.vertices.size()) cycle_rep_.reserve(expected - g_.vertices.size());
+        for (Index s = 0; s < num_slots(); ++s) {
+            if (cycle_of_slot_[s] != kNoIndex) continue;
+            const auto c = static_cast<Index>(cycle_rep_.size());
+            HalfEdgeId rep = rg_.half_edge[s];
+            for (Index x = s; cycle_of_slot_[x] == kNoIndex; x = next_slot_[x]) {
+                cycle_of_slot_[x] = c;
+                rep = std::min(rep, rg_.half_edge[x]);
+            }
+            cycle_rep_.push_back(rep);
+        }
+    }
+
+    // The sweep: rejects crossings (when asked to) and finds, for each
+    // component's leftmost vertex, the edge directly below it, as the slot of
+    // its left-to-right half-edge. It runs before the cycles are found, so
+    // that its memory and theirs are never held at once. Skipped for a
+    // connected graph when crossings are not checked.
+    void find_edges_below() {
+        below_.assign(leftmost_.size(), kNoIndex);
+        if (!options_.check_crossings && leftmost_.size() <= 1) return;
+        std::vector<char> wanted(rg_.num_vertices(), 0);
+        for (const Index r : leftmost_) wanted[r] = 1;
+        std::vector<Index> below(rg_.num_vertices(), kNoIndex);
+        sweep_ranks(rg_, g_, wanted, below, options_.check_crossings);
+        for (Index c = 0; c < leftmost_.size(); ++c) below_[c] = below[leftmost_[c]];
+    }
+
+    // The outer cycle of a component passes through its leftmost vertex, on
+    // the side of the wedge that contains the direction west. A component
+    // lies in the face just above the edge below its leftmost vertex; if that
+    // edge's upper side is the outer boundary of another component, that
+    // component's container is ours too (it has a smaller leftmost vertex,
+    // so it was placed already).
+    void place_components() {
+        const auto components = static_cast<Index>(leftmost_.size());
         is_outer_cycle_.assign(cycle_rep_.size(), 0);
-        outer_cycle_.assign(leftmost_.size(), kNoIndex);
-        for (Index c = 0; c < leftmost_.size(); ++c) {
-            const VertexId v = leftmost_[c];
-            const Index first = rings_.offset[v.index()];
-            const Index degree = rings_.offset[v.index() + 1] - first;
+        outer_cycle_.assign(components, kNoIndex);
+        for (Index c = 0; c < components; ++c) {
+            const Index r = leftmost_[c];
+            const Index first = rg_.offset[r];
+            const Index degree = rg_.degree(r);
             if (degree == 0) continue;  // an isolated vertex
-            // All directions at the leftmost vertex point into the half-plane
-            // x >= 0; the last one in [0, pi) (or the very last) borders the
-            // wedge through west.
+            // All directions at the leftmost vertex point into x >= 0; the
+            // last one in [0, pi) (or the very last) borders the wedge
+            // through west.
             Index k = 0;
-            while (k < degree && angular_half(point(v), point(target(rings_.ring[first + k]))) == 0) ++k;
-            const HalfEdgeId h = rings_.ring[first + (k + degree - 1) % degree];
-            outer_cycle_[c] = cycle_of_[h.index()];
+            while (k < degree && angular_half(rg_.point[r], rg_.point[rg_.target[first + k]]) == 0) ++k;
+            outer_cycle_[c] = cycle_of_slot_[first + (k + degree - 1) % degree];
             is_outer_cycle_[outer_cycle_[c]] = 1;
         }
+        // Containers are face numbers, known only after number_faces(): for
+        // now, a cycle (kNoIndex: the unbounded face).
+        container_cycle_.assign(components, kNoIndex);
+        for (Index c = 0; c < components; ++c) {
+            const Index s = below_[c];
+            if (s == kNoIndex) continue;
+            const Index cycle = cycle_of_slot_[s];  // the slot's half-edge runs left to right: face above
+            // The edge's right end is in the component whose outer boundary it may be.
+            container_cycle_[c] = is_outer_cycle_[cycle] != 0 ? container_cycle_[component_[rg_.target[s]]] : cycle;
+        }
+        release(below_);
+        release(rg_.point);
+        release(rg_.target);
+        release(component_);
     }
 
-    void place_faces() {
-        std::vector<EdgeId> below;
-        if (options_.check_crossings || leftmost_.size() > 1) {
-            std::vector<char> wanted(num_vertices(), 0);
-            for (const VertexId v : leftmost_) wanted[v.index()] = 1;
-            below = sweep(SweepInput{g_, lex_order_, rings_.offset, rings_.ring, wanted}, options_.check_crossings);
-        }
-        // Every cycle that is not the outer boundary of its component bounds a
-        // face of its own, numbered in cycle order after the unbounded face.
-        std::vector<FaceId> face_of_cycle(cycle_rep_.size());
-        d_.faces_.assign(1, FaceRecord{});
+    // Every cycle that is not the outer boundary of its component bounds a
+    // face of its own; faces are numbered after the unbounded face in order
+    // of their smallest half-edge. A pass over half-edge ids does it in O(E).
+    void number_faces() {
+        std::vector<Index> cycle_named_by(std::move(next_slot_));  // reuse the buffer, indexed by half-edge
+        std::fill(cycle_named_by.begin(), cycle_named_by.end(), kNoIndex);
         for (Index c = 0; c < cycle_rep_.size(); ++c) {
-            if (is_outer_cycle_[c] != 0) continue;
-            face_of_cycle[c] = FaceId(static_cast<Index>(d_.faces_.size()));
-            d_.faces_.push_back(FaceRecord{cycle_rep_[c], {}, {}});
+            if (is_outer_cycle_[c] == 0) cycle_named_by[cycle_rep_[c].index()] = c;
         }
-        // A component lies in the face just above the edge below its leftmost
-        // vertex. If that edge's upper side is the outer boundary of another
-        // component, that component's container is ours too; it has a smaller
-        // leftmost vertex, so it was placed already.
-        std::vector<FaceId> container(leftmost_.size(), Dcel::kUnboundedFace);
+        face_of_cycle_.assign(cycle_rep_.size(), kNoIndex);
+        face_outer_.reserve(1 + cycle_rep_.size() - (leftmost_.size() - isolated_count_));
+        face_outer_.assign(1, HalfEdgeId());  // the unbounded face has no outer cycle
+        for (Index h = 0; h < cycle_named_by.size(); ++h) {
+            if (cycle_named_by[h] == kNoIndex) continue;
+            face_of_cycle_[cycle_named_by[h]] = static_cast<Index>(face_outer_.size());
+            face_outer_.emplace_back(h);
+        }
+        release(cycle_named_by);
         for (Index c = 0; c < leftmost_.size(); ++c) {
-            const VertexId v = leftmost_[c];
-            const EdgeId e = below.empty() ? EdgeId() : below[v.index()];
-            if (!e.is_null()) {
-                const HalfEdgeId forward = half_edge_of(e, 0);
-                const HalfEdgeId upper = lex_less(point(origin(forward)), point(target(forward))) ? forward : twin(forward);
-                const Index cycle = cycle_of_[upper.index()];
-                container[c] = is_outer_cycle_[cycle] != 0 ? container[component_of_[origin(upper).index()]]
-                                                           : face_of_cycle[cycle];
+            const Index container = container_cycle_[c] == kNoIndex ? 0 : face_of_cycle_[container_cycle_[c]];
+            container_cycle_[c] = container;  // now a face number
+            if (outer_cycle_[c] != kNoIndex) face_of_cycle_[outer_cycle_[c]] = container;
+        }
+    }
+
+    // next(u->v) = the half-edge leaving v just clockwise of v->u: walking
+    // each ring, the twin of slot s's half-edge is followed by the half-edge
+    // of the slot clockwise of s. Sequential reads, scattered writes.
+    void write_half_edges() {
+        const Index h_count = num_slots();
+        d_.origin_.resize(h_count);
+        d_.next_.resize(h_count);
+        d_.prev_.resize(h_count);
+        d_.face_.resize(h_count);
+        d_.out_.assign(rg_.num_vertices(), HalfEdgeId());
+        for (Index r = 0; r < rg_.num_vertices(); ++r) {
+            const VertexId v = rg_.vertex[r];
+            HalfEdgeId out;
+            for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
+                const HalfEdgeId h = rg_.half_edge[s];
+                const HalfEdgeId arriving = twin(h);
+                const HalfEdgeId leaving = rg_.half_edge[rg_.clockwise(r, s)];
+                d_.origin_[h.index()] = v;
+                d_.next_[arriving.index()] = leaving;
+                d_.prev_[leaving.index()] = arriving;
+                d_.face_[h.index()] = FaceId(face_of_cycle_[cycle_of_slot_[s]]);
+                out = std::min(out, h);
             }
-            FaceRecord& f = d_.faces_[container[c].index()];
+            d_.out_[v.index()] = out;
+        }
+        release(cycle_of_slot_);
+        release(rg_.half_edge);
+        release(rg_.offset);
+    }
+
+    // One pass in face order; only faces with two or more holes or isolated
+    // vertices need their lists sorted.
+    void write_faces() {
+        std::vector<FaceRecord>().swap(d_.faces_);
+        d_.faces_.reserve(face_outer_.size());
+        for (const HalfEdgeId outer : face_outer_) d_.faces_.push_back(FaceRecord{outer, {}, {}});
+        release(face_outer_);
+        std::vector<Index> crowded;  // faces given a second hole or isolated vertex
+        for (Index c = 0; c < leftmost_.size(); ++c) {
+            FaceRecord& f = d_.faces_[container_cycle_[c]];
+            if (f.inner.size() + f.isolated.size() == 1) crowded.push_back(container_cycle_[c]);
             if (outer_cycle_[c] == kNoIndex) {
-                f.isolated.push_back(v);
+                f.isolated.push_back(rg_.vertex[leftmost_[c]]);
             } else {
-                face_of_cycle[outer_cycle_[c]] = container[c];
                 f.inner.push_back(cycle_rep_[outer_cycle_[c]]);
             }
         }
-        for (FaceRecord& f : d_.faces_) {
+        for (const Index i : crowded) {
+            FaceRecord& f = d_.faces_[i];
             std::sort(f.inner.begin(), f.inner.end());
             std::sort(f.isolated.begin(), f.isolated.end());
-        }
-        d_.face_.resize(num_half_edges());
-        for (Index h = 0; h < num_half_edges(); ++h) d_.face_[h] = face_of_cycle[cycle_of_[h]];
-    }
-
-    void fill_vertices() {
-        d_.out_.assign(num_vertices(), HalfEdgeId());
-        for (Index v = 0; v < num_vertices(); ++v) {
-            for (Index i = rings_.offset[v]; i < rings_.offset[v + 1]; ++i) {
-                d_.out_[v] = std::min(d_.out_[v], rings_.ring[i]);
-            }
         }
     }
 
     const PlanarGraph& g_;
     BuildOptions options_;
     Dcel d_;
+    RankGraph rg_;
 
-    std::vector<VertexId> lex_order_;
-    Rings rings_;
-    std::vector<Index> cycle_of_;
-    std::vector<HalfEdgeId> cycle_rep_;
-    std::vector<Index> component_of_;   // per vertex
-    std::vector<VertexId> leftmost_;    // per component
-    std::vector<Index> outer_cycle_;    // per component; kNoIndex when isolated
-    std::vector<char> is_outer_cycle_;  // per cycle
+    std::vector<Index> component_;        // per rank
+    std::vector<Index> leftmost_;         // per component: the rank of its leftmost vertex
+    std::vector<Index> below_;            // per component: the slot below its leftmost vertex, or kNoIndex
+    std::size_t isolated_count_ = 0;      // components without edges
+    std::vector<Index> next_slot_;        // per slot
+    std::vector<Index> cycle_of_slot_;    // per slot
+    std::vector<HalfEdgeId> cycle_rep_;   // per cycle: its smallest half-edge
+    std::vector<char> is_outer_cycle_;    // per cycle
+    std::vector<Index> outer_cycle_;      // per component; kNoIndex when isolated
+    std::vector<Index> container_cycle_;  // per component: see place_components, then number_faces
+    std::vector<Index> face_of_cycle_;    // per cycle
+    std::vector<HalfEdgeId> face_outer_;  // per face: its outer cycle's smallest half-edge (null: unbounded)
 };
 
 Dcel build(const PlanarGraph& graph, const BuildOptions& options) { return DcelBuilder(graph, options).run(); }

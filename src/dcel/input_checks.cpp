@@ -1,35 +1,16 @@
 #include "dcel/input_checks.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <string>
 
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
-#include "dcel/geometry/predicates.hpp"
+#include "dcel/lex_order.hpp"
+#include "dcel/rank_graph.hpp"
+#include "dcel/ring_sort.hpp"
 
 namespace dcel {
-namespace {
-
-[[noreturn]] void throw_same_direction(const PlanarGraph& g, VertexId v, HalfEdgeId a, HalfEdgeId b) {
-    const EdgeId lo = std::min(edge_of(a), edge_of(b));
-    const EdgeId hi = std::max(edge_of(a), edge_of(b));
-    const VertexId ta = graph_target(g, a);
-    if (ta == graph_target(g, b)) {
-        throw InvalidInput(InputErrorKind::DuplicateEdge,
-                           "edges " + std::to_string(lo.index()) + " and " + std::to_string(hi.index()) +
-                               " both join vertices " + std::to_string(std::min(v, ta).index()) + " and " +
-                               std::to_string(std::max(v, ta).index()) + "; remove one of them",
-                           {v, ta}, {lo, hi});
-    }
-    throw InvalidInput(InputErrorKind::Overlap,
-                       describe_edge(g, lo) + " and " + describe_edge(g, hi) + " overlap: both leave vertex " +
-                           std::to_string(v.index()) + " in the same direction; merge them into one chain of edges",
-                       {v}, {lo, hi});
-}
-
-}  // namespace
 
 void check_elements(const PlanarGraph& g) {
     // Ids are 32 bits and kNoIndex is reserved for "null".
@@ -73,29 +54,7 @@ void check_elements(const PlanarGraph& g) {
 }
 
 std::vector<VertexId> sort_vertices_checked(const PlanarGraph& g) {
-    const auto n = static_cast<Index>(g.vertices.size());
-    std::vector<VertexId> order(n);
-    for (Index v = 0; v < n; ++v) order[v] = VertexId(v);
-    // Ties broken by id, so equal points end up adjacent, smaller id first.
-    std::sort(order.begin(), order.end(), [&](VertexId a, VertexId b) {
-        const Point pa = g.vertices[a.index()];
-        const Point pb = g.vertices[b.index()];
-        if (lex_less(pa, pb)) return true;
-        if (lex_less(pb, pa)) return false;
-        return a < b;
-    });
-    for (std::size_t i = 1; i < order.size(); ++i) {
-        const VertexId a = order[i - 1];
-        const VertexId b = order[i];
-        if (g.vertices[a.index()] == g.vertices[b.index()]) {
-            throw InvalidInput(InputErrorKind::DuplicatePoint,
-                               "vertices " + std::to_string(a.index()) + " and " + std::to_string(b.index()) +
-                                   " are at the same point " + format_point(g.vertices[a.index()]) +
-                                   "; merge them into one vertex",
-                               {a, b});
-        }
-    }
-    return order;
+    return lex_order_checked(g.vertices).vertex_of_rank;
 }
 
 Rings sort_rings_checked(const PlanarGraph& g) {
@@ -109,21 +68,19 @@ Rings sort_rings_checked(const PlanarGraph& g) {
     std::vector<Index> fill(r.offset.begin(), r.offset.end() - 1);
     for (Index h = 0; h < half_edges; ++h) r.ring[fill[graph_origin(g, HalfEdgeId(h)).index()]++] = HalfEdgeId(h);
 
+    std::vector<RingEntry> ring;
     for (Index v = 0; v < n; ++v) {
-        const auto first = r.ring.begin() + r.offset[v];
-        const auto last = r.ring.begin() + r.offset[v + 1];
-        const Point c = g.vertices[v];
-        auto direction = [&](HalfEdgeId h) { return g.vertices[graph_target(g, h).index()]; };
-        std::sort(first, last, [&](HalfEdgeId a, HalfEdgeId b) {
-            const Sign s = compare_angle(c, direction(a), direction(b));
-            return s == Sign::Zero ? a < b : s == Sign::Negative;
-        });
-        // adjacent_find never forms first + 1 on an empty ring (a null
-        // pointer when the graph has no edges: undefined behaviour).
-        const auto same = std::adjacent_find(first, last, [&](HalfEdgeId a, HalfEdgeId b) {
-            return compare_angle(c, direction(a), direction(b)) == Sign::Zero;
-        });
-        if (same != last) throw_same_direction(g, VertexId(v), *same, *(same + 1));
+        const Index first = r.offset[v];
+        const Index degree = r.offset[v + 1] - first;
+        ring.resize(degree);
+        for (Index i = 0; i < degree; ++i) {
+            const HalfEdgeId h = r.ring[first + i];
+            ring[i] = RingEntry{g.vertices[graph_target(g, h).index()], h, 0, 0};
+        }
+        const Point centre = g.vertices[v];
+        const std::size_t same = sort_ring(centre, ring);
+        for (Index i = 0; i < degree; ++i) r.ring[first + i] = ring[i].half_edge;
+        if (same < ring.size()) throw_same_direction(g, VertexId(v), ring[same].half_edge, ring[same + 1].half_edge);
     }
     return r;
 }

@@ -1,64 +1,24 @@
 #include "dcel/sweep.hpp"
 
 #include <algorithm>
-#include <iterator>
-#include <set>
 #include <utility>
 
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/geometry/segments.hpp"
+#include "dcel/status_list.hpp"
 
 namespace dcel {
 namespace {
 
-// An edge as the sweep sees it: from its left (lexicographically smaller)
-// endpoint to its right one. Points are copied so comparisons stay local.
-struct Segment {
-    Point left;
-    Point right;
-    VertexId left_vertex;
-    VertexId right_vertex;
-};
-
-struct QueryPoint {
-    Point p;
-};
-
-// Orders the segments cut by the sweep line from bottom to top. Two active
-// segments never meet except at a shared endpoint (the sweep stops at the
-// first violation), so comparing at the later of the two left endpoints is
-// consistent for as long as both stay active.
-struct StatusLess {
-    using is_transparent = void;
-    const Segment* segments;
-
-    bool operator()(Index s, Index t) const {
-        if (s == t) return false;
-        const Segment& a = segments[s];
-        const Segment& b = segments[t];
-        if (a.left_vertex == b.left_vertex) {
-            const Sign o = orient2d(a.left, a.right, b.right);
-            return o == Sign::Zero ? s < t : o == Sign::Positive;
-        }
-        if (lex_less(b.left, a.left)) {
-            // a starts later: a is below b when a's start is below b.
-            Sign o = orient2d(b.left, b.right, a.left);
-            if (o == Sign::Zero) o = orient2d(b.left, b.right, a.right);
-            return o == Sign::Zero ? s < t : o == Sign::Negative;
-        }
-        Sign o = orient2d(a.left, a.right, b.left);
-        if (o == Sign::Zero) o = orient2d(a.left, a.right, b.right);
-        return o == Sign::Zero ? s < t : o == Sign::Positive;
-    }
-    // A segment is below a point when the point is to the left of it.
-    bool operator()(Index s, QueryPoint q) const {
-        return orient2d(segments[s].left, segments[s].right, q.p) == Sign::Positive;
-    }
-    bool operator()(QueryPoint q, Index s) const {
-        return orient2d(segments[s].left, segments[s].right, q.p) == Sign::Negative;
-    }
+// An edge as the sweep sees it, from its left (lexicographically smaller)
+// endpoint to its right one; ranks are indexes into RankGraph::point.
+struct Span {
+    Index left;
+    Index right;
+    Index start_slot;  // the slot of the half-edge left -> right
+    Index edge;        // the input edge id, for messages
 };
 
 [[noreturn]] void throw_vertex_on_edge(const PlanarGraph& g, VertexId v, EdgeId e) {
@@ -88,113 +48,176 @@ struct StatusLess {
                        {v}, {e});
 }
 
-// Throws when segments s and t meet other than at a shared endpoint.
-void check_pair(const PlanarGraph& g, const std::vector<Segment>& segs, Index s, Index t) {
-    const Segment& a = segs[s];
-    const Segment& b = segs[t];
-    switch (segment_contact(a.left, a.right, b.left, b.right)) {
-        case Contact::None:
-        case Contact::SharedEndpoint: return;
-        case Contact::Crossing: {
-            const EdgeId lo = EdgeId(std::min(s, t));
-            const EdgeId hi = EdgeId(std::max(s, t));
-            throw InvalidInput(InputErrorKind::Crossing,
-                               describe_edge(g, lo) + " and " + describe_edge(g, hi) +
-                                   " cross; split both at their crossing point",
-                               {}, {lo, hi});
-        }
-        case Contact::Touch:
-        case Contact::Overlap: {
-            // Name a vertex that lies inside the other segment.
-            const std::pair<const Segment*, Index> cases[] = {{&a, t}, {&b, s}};
-            for (const auto& [seg, other] : cases) {
-                const Segment& o = segs[other];
-                for (const VertexId v : {seg->left_vertex, seg->right_vertex}) {
-                    if (strictly_inside_segment(o.left, o.right, g.vertices[v.index()])) {
-                        throw_vertex_on_edge(g, v, EdgeId(other));
-                    }
-                }
-            }
-            throw InvalidInput(InputErrorKind::Overlap,
-                               describe_edge(g, EdgeId(s)) + " and " + describe_edge(g, EdgeId(t)) + " overlap", {},
-                               {EdgeId(s), EdgeId(t)});
-        }
-    }
-}
+class Sweep {
+public:
+    Sweep(const RankGraph& rg, const PlanarGraph& g, bool check)
+        : rg_(rg), g_(g), check_(check), node_of_slot_(rg.num_slots(), kNoIndex), spans_(g.edges.size()),
+          status_(static_cast<Index>(g.edges.size())) {}
 
-}  // namespace
-
-std::vector<EdgeId> sweep(const SweepInput& in, bool check_intersections) {
-    const PlanarGraph& g = in.graph;
-    std::vector<Segment> segs(g.edges.size());
-    for (Index k = 0; k < g.edges.size(); ++k) {
-        VertexId a = g.edges[k].u;
-        VertexId b = g.edges[k].v;
-        if (lex_less(g.vertices[b.index()], g.vertices[a.index()])) std::swap(a, b);
-        segs[k] = {g.vertices[a.index()], g.vertices[b.index()], a, b};
+    // One event per vertex, in rank order: O(degree) list work, plus one
+    // O(log n) search when no edge arrives from the left, plus O(1)
+    // predicate calls for the checks.
+    void run(std::span<const char> wanted, std::span<Index> below) {
+        for (Index r = 0; r < rg_.num_vertices(); ++r) visit(r, wanted, below);
     }
 
-    using Status = std::set<Index, StatusLess>;
-    Status status(StatusLess{segs.data()});
-    std::vector<Status::iterator> where(g.edges.size(), status.end());
-    std::vector<EdgeId> below(g.vertices.size());
+private:
+    [[nodiscard]] Point left(Index e) const { return rg_.point[spans_[e].left]; }
+    [[nodiscard]] Point right(Index e) const { return rg_.point[spans_[e].right]; }
+    // Edge e passes below p: p is to the left of e, looking from left to right.
+    [[nodiscard]] bool below_point(Index e, Point p) const {
+        return orient2d(left(e), right(e), p) == Sign::Positive;
+    }
 
-    for (const VertexId v : in.lex_order) {
-        const Point p = g.vertices[v.index()];
-        const Index ring_begin = in.ring_offset[v.index()];
-        const Index ring_end = in.ring_offset[v.index() + 1];
+    // Where an edge's status node is recorded: in the slot at its right end
+    // when that ring is small (found by a scan of it, next door in memory),
+    // else in the slot at its left end (found from the right end by a scan
+    // or search of the left end's ring). Either way both ends reach it
+    // through memory near them, never through the input's edge ids.
+    [[nodiscard]] Index home_of_starting(Index r, Index s) const {
+        const Index t = rg_.target[s];
+        return rg_.small(t) ? rg_.slot_towards(t, r) : s;
+    }
+    [[nodiscard]] Index home_of_ending(Index r, Index s) const {
+        return rg_.small(r) ? s : rg_.slot_towards(rg_.target[s], r);
+    }
 
-        // Edges ending here leave the status first (by stored position, so a
-        // comparator made inconsistent by unchecked crossings cannot misfire).
+    void visit(Index r, std::span<const char> wanted, std::span<Index> below_out) {
+        const Point p = rg_.point[r];
+        const Index ring_begin = rg_.offset[r];
+        const Index ring_end = rg_.offset[r + 1];
+
+        // Edges ending here leave the status. In a consistent status they
+        // are adjacent: their neighbours below and above are the candidates
+        // for `below` and `above`.
+        Index below = StatusList::kNone;
+        Index above = StatusList::kNone;
         bool any_ending = false;
-        for (Index i = ring_begin; i < ring_end; ++i) {
-            const Index e = edge_of(in.ring[i]).index();
-            if (segs[e].right_vertex == v && where[e] != status.end()) {
-                status.erase(where[e]);
-                where[e] = status.end();
+        for (Index s = ring_begin; s < ring_end; ++s) {
+            if (rg_.target[s] >= r) continue;
+            const Index e = node_of_slot_[home_of_ending(r, s)];
+            if (e == kNoIndex || !status_.contains(e)) continue;
+            if (!any_ending) {
+                Index lo = e;
+                Index hi = e;
+                while (status_.prev(lo) != StatusList::kNone && spans_[status_.prev(lo)].right == r) lo = status_.prev(lo);
+                while (status_.next(hi) != StatusList::kNone && spans_[status_.next(hi)].right == r) hi = status_.next(hi);
+                below = status_.prev(lo);
+                above = status_.next(hi);
                 any_ending = true;
             }
+            status_.erase(e);
         }
-
-        // `above` is the first active segment not below p.
-        const auto above = status.lower_bound(QueryPoint{p});
-        const auto below_it = above == status.begin() ? status.end() : std::prev(above);
-        if (check_intersections && above != status.end() &&
-            orient2d(segs[*above].left, segs[*above].right, p) == Sign::Zero) {
-            throw_vertex_on_edge(g, v, EdgeId(*above));
+        // `above` must be the first active edge not below p (what a search
+        // would find). The candidates are that exactly when `below` is below
+        // p and `above` is not; otherwise, and when nothing ended here, search.
+        if (!any_ending || (below != StatusList::kNone && !below_point(below, p)) ||
+            (above != StatusList::kNone && below_point(above, p))) {
+            above = status_.first_not_below([&](Index e) { return below_point(e, p); });
+            below = above == StatusList::kNone ? status_.last() : status_.prev(above);
         }
-        if (in.wanted[v.index()] != 0 && below_it != status.end()) below[v.index()] = EdgeId(*below_it);
+        if (check_ && above != StatusList::kNone && orient2d(left(above), right(above), p) == Sign::Zero) {
+            throw_vertex_on_edge(g_, rg_.vertex[r], EdgeId(spans_[above].edge));
+        }
+        if (wanted[r] != 0) below_out[r] = below == StatusList::kNone ? kNoIndex : spans_[below].start_slot;
 
         // Edges starting here enter bottom to top: the ring lists directions
         // counterclockwise from east, so those in the lower half-plane (the
         // ring's second half) come first, then those in the upper one.
         Index split = ring_begin;
-        while (split < ring_end) {
-            const HalfEdgeId h = in.ring[split];
-            const Segment& s = segs[edge_of(h).index()];
-            const Point target = s.left_vertex == v ? s.right : s.left;
-            if (angular_half(p, target) == 1) break;
-            ++split;
-        }
-        Status::iterator lowest_new = status.end();
-        Status::iterator highest_new = status.end();
-        auto insert_starting = [&](Index i) {
-            const Index e = edge_of(in.ring[i]).index();
-            if (segs[e].left_vertex != v) return;
-            where[e] = status.insert(above, e);
-            if (lowest_new == status.end()) lowest_new = where[e];
-            highest_new = where[e];
+        while (split < ring_end && angular_half(p, rg_.point[rg_.target[split]]) == 0) ++split;
+        Index lowest_new = StatusList::kNone;
+        Index last = below;
+        auto insert_starting = [&](Index s) {
+            if (rg_.target[s] < r) return;
+            const Index edge = edge_of(rg_.half_edge[s]).index();
+            const Index e = next_node_++;
+            node_of_slot_[home_of_starting(r, s)] = e;
+            spans_[e] = Span{r, rg_.target[s], s, edge};
+            status_.insert_above(last, e);
+            if (lowest_new == StatusList::kNone) lowest_new = e;
+            last = e;
         };
-        for (Index i = split; i < ring_end; ++i) insert_starting(i);
-        for (Index i = ring_begin; i < split; ++i) insert_starting(i);
+        for (Index s = split; s < ring_end; ++s) insert_starting(s);
+        for (Index s = ring_begin; s < split; ++s) insert_starting(s);
 
-        if (!check_intersections) continue;
-        if (lowest_new == status.end()) {
-            if (any_ending && below_it != status.end() && above != status.end()) check_pair(g, segs, *below_it, *above);
+        if (!check_) return;
+        if (lowest_new == StatusList::kNone) {
+            if (any_ending && below != StatusList::kNone && above != StatusList::kNone) check_pair(below, above);
         } else {
-            if (below_it != status.end()) check_pair(g, segs, *below_it, *lowest_new);
-            if (above != status.end()) check_pair(g, segs, *highest_new, *above);
+            if (below != StatusList::kNone) check_pair(below, lowest_new);
+            if (above != StatusList::kNone) check_pair(last, above);
         }
+    }
+
+    // Throws when the edges of nodes ns and nt meet other than at a shared
+    // endpoint.
+    void check_pair(Index ns, Index nt) const {
+        const Index s = spans_[ns].edge;
+        const Index t = spans_[nt].edge;
+        const Point a_left = left(ns);
+        const Point a_right = right(ns);
+        const Point b_left = left(nt);
+        const Point b_right = right(nt);
+        switch (segment_contact(a_left, a_right, b_left, b_right)) {
+            case Contact::None:
+            case Contact::SharedEndpoint: return;
+            case Contact::Crossing: {
+                const EdgeId lo = EdgeId(std::min(s, t));
+                const EdgeId hi = EdgeId(std::max(s, t));
+                throw InvalidInput(InputErrorKind::Crossing,
+                                   describe_edge(g_, lo) + " and " + describe_edge(g_, hi) +
+                                       " cross; split both at their crossing point",
+                                   {}, {lo, hi});
+            }
+            case Contact::Touch:
+            case Contact::Overlap: {
+                // Name a vertex that lies inside the other segment.
+                const std::pair<Index, Index> cases[] = {{ns, nt}, {nt, ns}};
+                for (const auto& [seg, other] : cases) {
+                    for (const Index v : {spans_[seg].left, spans_[seg].right}) {
+                        if (strictly_inside_segment(left(other), right(other), rg_.point[v])) {
+                            throw_vertex_on_edge(g_, rg_.vertex[v], EdgeId(spans_[other].edge));
+                        }
+                    }
+                }
+                throw InvalidInput(InputErrorKind::Overlap,
+                                   describe_edge(g_, EdgeId(s)) + " and " + describe_edge(g_, EdgeId(t)) + " overlap",
+                                   {}, {EdgeId(s), EdgeId(t)});
+            }
+        }
+    }
+
+    // Status nodes are numbered in the order edges enter it, so that the
+    // nodes of neighbouring edges sit close in memory whatever the input
+    // order.
+    const RankGraph& rg_;
+    const PlanarGraph& g_;
+    bool check_;
+    std::vector<Index> node_of_slot_;  // see home_of_starting
+    std::vector<Span> spans_;          // by node
+    StatusList status_;
+    Index next_node_ = 0;
+};
+
+}  // namespace
+
+void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted, std::span<Index> below,
+                 bool check_intersections) {
+    Sweep(rg, graph, check_intersections).run(wanted, below);
+}
+
+std::vector<EdgeId> sweep(const SweepInput& in, bool check_intersections) {
+    const PlanarGraph& g = in.graph;
+    const RankGraph rg = rank_graph_from_rings(g, in.lex_order, in.ring_offset, in.ring);
+    const Index n = rg.num_vertices();
+    std::vector<char> wanted(n);
+    for (Index r = 0; r < n; ++r) wanted[r] = in.wanted[rg.vertex[r].index()];
+    std::vector<Index> below_slot(n, kNoIndex);
+    sweep_ranks(rg, g, wanted, below_slot, check_intersections);
+    std::vector<EdgeId> below(n);
+    for (Index r = 0; r < n; ++r) {
+        if (below_slot[r] != kNoIndex) below[rg.vertex[r].index()] = edge_of(rg.half_edge[below_slot[r]]);
     }
     return below;
 }

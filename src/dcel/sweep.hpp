@@ -19,6 +19,7 @@
 
 #include "dcel/graph.hpp"
 #include "dcel/ids.hpp"
+#include "dcel/rank_graph.hpp"
 
 namespace dcel {
 
@@ -38,5 +39,12 @@ struct SweepInput {
 // set and edges do intersect, the answers are unspecified, but the sweep
 // stays memory safe and terminates.
 [[nodiscard]] std::vector<EdgeId> sweep(const SweepInput& in, bool check_intersections);
+
+// The same sweep on a graph in rank form (what build() uses). For each rank r
+// with wanted[r] set, below[r] becomes the slot of the left-to-right
+// half-edge of the edge below (kNoIndex: nothing below); other entries are
+// left alone. `graph` is the input, used only to word error messages.
+void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted,
+                 std::span<Index> below, bool check_intersections);
 
 }  // namespace dcel

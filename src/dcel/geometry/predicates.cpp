@@ -8,14 +8,8 @@
 namespace dcel {
 namespace {
 
-constexpr double kEpsilon = 0x1p-53;  // half an ulp of 1: the unit roundoff
-// Shewchuk's ccwerrboundA: (3 + 16 eps) eps bounds the error of the filter's
-// determinant relative to |detleft| + |detright|.
-constexpr double kFilterBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
-// Below this the products may underflow. Above it, any absolute error from
-// underflow (at most 2^-1074 a product) is smaller than the 16 eps^2 slack in
-// kFilterBound, so the relative bound stays valid.
-constexpr double kFilterMinimum = 0x1p-900;
+using detail::kOrientFilterBound;
+using detail::kOrientFilterMinimum;
 
 // Knuth's TwoSum: s + t == a + b exactly (no overflow assumed).
 inline void two_sum(double a, double b, double& s, double& t) {
@@ -77,7 +71,7 @@ Sign orient2d_exact(Point a, Point b, Point c) {
     return sum.sign();
 }
 
-Sign orient2d(Point a, Point b, Point c) {
+Sign orient2d_slow(Point a, Point b, Point c) {
     const double acx = a.x - c.x;
     const double bcx = b.x - c.x;
     const double acy = a.y - c.y;
@@ -91,7 +85,7 @@ Sign orient2d(Point a, Point b, Point c) {
     const double detright = acy * bcx;
     const double det = detleft - detright;
     const double detsum = std::fabs(detleft) + std::fabs(detright);
-    if (detsum >= kFilterMinimum && std::isfinite(detsum) && std::fabs(det) > kFilterBound * detsum) {
+    if (detsum >= kOrientFilterMinimum && std::isfinite(detsum) && std::fabs(det) > kOrientFilterBound * detsum) {
         return sign_of(det);
     }
     // Stage B: when the four differences are exact, the determinant is

@@ -161,6 +161,34 @@ std::string write_faces(const std::vector<std::vector<VertexId>>& cycles) {
     return out;
 }
 
+std::string write_faces_of(const Dcel& d) {
+    std::string out;
+    out.reserve(16 + d.num_half_edges() * 9);  // ids of up to 7 digits and ", "
+    JsonWriter w(out);
+    w.raw("{\"faces\": [");
+    std::vector<char> seen(d.num_half_edges(), 0);
+    bool first = true;
+    // Cycles in order of their smallest half-edge, each from it, as
+    // boundary_cycles lists them.
+    for (Index i = 0; i < d.num_half_edges(); ++i) {
+        if (seen[i] != 0) continue;
+        if (!first) w.raw(", ");
+        first = false;
+        w.raw('[');
+        bool first_vertex = true;
+        for (const HalfEdgeId h : d.cycle(HalfEdgeId(i))) {
+            seen[h.index()] = 1;
+            if (!first_vertex) w.raw(", ");
+            first_vertex = false;
+            w.index(d.origin(h).index());
+        }
+        w.raw(']');
+    }
+    w.raw("]}\n");
+    w.flush();
+    return out;
+}
+
 std::string write_dump(const DcelDump& dump, DumpStyle style) {
     std::string out;
     out.reserve(64 + dump.vertices.size() * 40 + dump.vertex_out.size() * 12 + dump.half_edges.size() * 80 +

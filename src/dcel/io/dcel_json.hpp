@@ -23,6 +23,7 @@
 #include <variant>
 #include <vector>
 
+#include "dcel/dcel.hpp"
 #include "dcel/dump.hpp"
 #include "dcel/ids.hpp"
 #include "dcel/io/json_reader.hpp"
@@ -32,6 +33,9 @@ namespace dcel::io {
 // Both end in "\n". Faces: one line, {"faces": [[0, 1, 2], [0, 2, 1]]}; a null
 // id is written as null.
 [[nodiscard]] std::string write_faces(const std::vector<std::vector<VertexId>>& cycles);
+// The same text as write_faces(boundary_cycles(d)), written straight from the
+// DCEL without building the lists (what `dcel faces` prints). O(E).
+[[nodiscard]] std::string write_faces_of(const Dcel& d);
 
 // Lines: one vertex, vertex_out entry, half-edge or face per line (readable,
 // and diffs show exactly the records that changed). Compact: one line.

@@ -1,0 +1,130 @@
+#include "dcel/lex_order.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "dcel/error.hpp"
+#include "dcel/format.hpp"
+
+namespace dcel {
+namespace {
+
+struct Keyed {
+    Point p;
+    Index id;
+};
+
+bool keyed_less(const Keyed& a, const Keyed& b) {
+    if (lex_less(a.p, b.p)) return true;
+    if (lex_less(b.p, a.p)) return false;
+    return a.id < b.id;
+}
+
+void insertion_sort(Keyed* first, Keyed* last) {
+    for (Keyed* i = first + 1; i < last; ++i) {
+        const Keyed k = *i;
+        Keyed* j = i;
+        for (; j > first && keyed_less(k, *(j - 1)); --j) *j = *(j - 1);
+        *j = k;
+    }
+}
+
+// Distributes [first, last) into `out` (last - first elements), in about
+// half as many buckets as elements by the coordinate `key` selects, through
+// floor((c - min) * scale): every IEEE operation in it is monotone, so
+// c1 <= c2 gives bucket(c1) <= bucket(c2) and the buckets come in exact
+// order. Returns the bucket ends.
+template <class Key>
+std::vector<Index> distribute(const Keyed* first, const Keyed* last, Keyed* out, Key key) {
+    const auto n = static_cast<Index>(last - first);
+    double lo = key(*first);
+    double hi = lo;
+    for (const Keyed* p = first; p != last; ++p) {
+        lo = std::min(lo, key(*p));
+        hi = std::max(hi, key(*p));
+    }
+    const Index buckets = std::max<Index>(1, n / 2);
+    // A range that overflows, or one so small that scale overflows, puts
+    // everything in bucket 0: still exact, the caller then sorts it.
+    const double range = hi - lo;
+    double scale = range > 0 ? static_cast<double>(buckets) / range : 0.0;
+    if (!std::isfinite(range) || !std::isfinite(scale)) scale = 0.0;
+    auto bucket_of = [&](const Keyed& k) -> Index {
+        const double t = (key(k) - lo) * scale;  // in [0, buckets] up to rounding, never NaN
+        return t < static_cast<double>(buckets) ? static_cast<Index>(t) : buckets - 1;
+    };
+    std::vector<Index> end(buckets + 1, 0);
+    for (const Keyed* p = first; p != last; ++p) ++end[bucket_of(*p) + 1];
+    for (Index b = 0; b < buckets; ++b) end[b + 1] += end[b];
+    for (const Keyed* p = first; p != last; ++p) out[end[bucket_of(*p)]++] = *p;
+    end.pop_back();  // end[b] is now the end of bucket b
+    return end;
+}
+
+// Sorts one bucket of the x pass. Most hold a couple of points; a large one
+// whose points share one x (a grid's column, a vertical chain) is bucketed
+// again by y; anything else large goes to std::sort.
+void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
+    if (last - first <= 16) {
+        insertion_sort(first, last);
+        return;
+    }
+    const bool one_x = std::all_of(first, last, [&](const Keyed& k) { return k.p.x == first->p.x; });
+    if (!one_x) {
+        std::sort(first, last, keyed_less);
+        return;
+    }
+    const std::vector<Index> ends = distribute(first, last, scratch, [](const Keyed& k) { return k.p.y; });
+    std::copy(scratch, scratch + (last - first), first);
+    Index begin = 0;
+    for (const Index end : ends) {
+        if (end - begin > 16) {
+            std::sort(first + begin, first + end, keyed_less);
+        } else {
+            insertion_sort(first + begin, first + end);
+        }
+        begin = end;
+    }
+}
+
+}  // namespace
+
+LexOrder lex_order_checked(const std::vector<Point>& points) {
+    const auto n = static_cast<Index>(points.size());
+    LexOrder out;
+    out.vertex_of_rank.resize(n);
+    out.rank_of_vertex.resize(n);
+    if (n == 0) return out;
+
+    std::vector<Keyed> scratch(n);
+    for (Index v = 0; v < n; ++v) scratch[v] = Keyed{points[v], v};
+    std::vector<Keyed> sorted(n);
+    const std::vector<Index> ends = distribute(scratch.data(), scratch.data() + n, sorted.data(),
+                                               [](const Keyed& k) { return k.p.x; });
+    Index begin = 0;
+    for (const Index end : ends) {
+        sort_bucket(sorted.data() + begin, sorted.data() + end, scratch.data());
+        begin = end;
+    }
+    std::vector<Keyed>().swap(scratch);
+    for (Index r = 0; r < n; ++r) {
+        out.vertex_of_rank[r] = VertexId(sorted[r].id);
+        out.rank_of_vertex[sorted[r].id] = r;
+    }
+    for (Index r = 1; r < n; ++r) {
+        if (sorted[r - 1].p == sorted[r].p) {
+            const VertexId a(sorted[r - 1].id);
+            const VertexId b(sorted[r].id);
+            throw InvalidInput(InputErrorKind::DuplicatePoint,
+                               "vertices " + std::to_string(a.index()) + " and " + std::to_string(b.index()) +
+                                   " are at the same point " + format_point(sorted[r].p) +
+                                   "; merge them into one vertex",
+                               {a, b});
+        }
+    }
+    return out;
+}
+
+}  // namespace dcel

@@ -1,0 +1,185 @@
+#include "dcel/ring_sort.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "dcel/geometry/predicates.hpp"
+
+namespace dcel {
+namespace {
+
+// The exact order: quadrant, then orient2d, then half-edge id.
+struct ExactLess {
+    Point centre;
+    bool operator()(const RingEntry& a, const RingEntry& b) const {
+        if (a.quadrant != b.quadrant) return a.quadrant < b.quadrant;
+        const Sign s = orient2d(centre, a.target, b.target);  // positive: a comes first
+        return s == Sign::Zero ? a.half_edge < b.half_edge : s == Sign::Positive;
+    }
+};
+
+// A guess at the angle within the quadrant, only used to order entries
+// before the exact check: b / (a + b) in [0, 1], with (a, b) the direction
+// turned into the first quadrant. Monotone in the true angle up to
+// rounding; NaN (from overflowed differences) becomes 0.
+double approximate_angle(Point centre, const RingEntry& e) {
+    const double dx = e.target.x - centre.x;
+    const double dy = e.target.y - centre.y;
+    double a = 0;
+    double b = 0;
+    switch (e.quadrant) {
+        case 0: a = dx, b = dy; break;
+        case 1: a = dy, b = -dx; break;
+        case 2: a = -dx, b = -dy; break;
+        default: a = -dy, b = dx; break;
+    }
+    const double t = b / (a + b);
+    return t >= 0 && t <= 1 ? t : 0.0;
+}
+
+template <class Less>
+void insertion_sort(std::span<RingEntry> ring, Less less) {
+    for (std::size_t i = 1; i < ring.size(); ++i) {
+        const RingEntry e = ring[i];
+        std::size_t j = i;
+        for (; j > 0 && less(e, ring[j - 1]); --j) ring[j] = ring[j - 1];
+        ring[j] = e;
+    }
+}
+
+// One comparator of a sorting network: branch-free (min/max become cmov).
+inline void compare_swap(std::uint64_t& a, std::uint64_t& b) {
+    const std::uint64_t lo = std::min(a, b);
+    b = std::max(a, b);
+    a = lo;
+}
+
+// Batcher's odd-even merge sort for 8 keys: 19 comparators, no branches,
+// so the unpredictable comparisons of a ring's angles cost no mispredictions.
+// Its first 5 comparators (in this order) sort keys 0..3 on their own, which
+// is all a ring of degree <= 4 (a grid's) needs.
+void sort8(std::uint64_t* k, std::size_t n) {
+    static constexpr unsigned char kPairs[19][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}, {1, 2}, {4, 5}, {6, 7},
+                                                    {4, 6}, {5, 7}, {5, 6}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
+                                                    {2, 4}, {3, 5}, {1, 2}, {3, 4}, {5, 6}};
+    const std::size_t used = n <= 4 ? 5 : 19;
+    for (std::size_t c = 0; c < used; ++c) compare_swap(k[kPairs[c][0]], k[kPairs[c][1]]);
+}
+
+// The exact check after a guessed order: one orient2d per adjacent pair in
+// one quadrant (the guess compared quadrants exactly). Returns the first
+// same-direction index (ring.size() for none), or kWrongOrder.
+constexpr std::size_t kWrongOrder = ~std::size_t{0};
+std::size_t confirm(Point centre, std::span<const RingEntry> ring) {
+    std::size_t same = ring.size();
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
+        const RingEntry& a = ring[i];
+        const RingEntry& b = ring[i + 1];
+        if (a.quadrant != b.quadrant) continue;
+        const Sign s = orient2d(centre, a.target, b.target);
+        if (s == Sign::Zero && a.half_edge < b.half_edge) {
+            if (same == ring.size()) same = i;
+        } else if (s != Sign::Positive) {
+            return kWrongOrder;
+        }
+    }
+    return same;
+}
+
+}  // namespace
+
+std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
+    for (RingEntry& e : ring) e.quadrant = quadrant_of(centre, e.target);
+    const ExactLess exact{centre};
+    const std::size_t n = ring.size();
+    if (n > 24) {
+        // Large rings (a star's centre): std::sort on integer keys (quadrant,
+        // 30 bits of the guess, position), then the same exact confirmation.
+        std::vector<std::uint64_t> key(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto guess = static_cast<std::uint64_t>(approximate_angle(centre, ring[i]) * 0x1.fffffffp29);
+            key[i] = (std::uint64_t{ring[i].quadrant} << 62U) | (guess << 32U) | i;
+        }
+        std::sort(key.begin(), key.end());
+        // Apply the permutation in place, cycle by cycle (a sorted copy of
+        // the ring would add 32 bytes an entry to the build's peak memory).
+        std::vector<char> placed(n, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (placed[i] != 0) continue;
+            const RingEntry first = ring[i];
+            std::size_t j = i;
+            for (;;) {
+                placed[j] = 1;
+                const std::size_t from = key[j] & 0xFFFFFFFFU;
+                if (from == i) {
+                    ring[j] = first;
+                    break;
+                }
+                ring[j] = ring[from];
+                j = from;
+            }
+        }
+        const std::size_t same = confirm(centre, ring);
+        if (same != kWrongOrder) return same;
+        std::sort(ring.begin(), ring.end(), exact);
+        return first_same_direction(centre, ring);
+    }
+    // Small rings: order by a floating-point guess at the angle, then
+    // confirm each adjacent pair exactly. A sequence whose neighbours are
+    // all in exact order is in exact order, so the guess is only ever a
+    // shortcut; when a pair is out of order (directions closer than
+    // rounding can tell), sort exactly. Ties in the guess keep the ring's
+    // order, i.e. half-edge order for rings that come in that order.
+    if (n <= 8) {
+        // Keys: quadrant (2 bits), the guess in [0, 1] (56 bits), position (5 bits).
+        std::uint64_t key[8];
+        for (std::size_t i = 0; i < 8; ++i) {
+            if (i >= n) {
+                key[i] = ~std::uint64_t{0};
+                continue;
+            }
+            const auto guess = static_cast<std::uint64_t>(approximate_angle(centre, ring[i]) * 0x1p55);
+            key[i] = (std::uint64_t{ring[i].quadrant} << 61U) | (guess << 5U) | i;
+        }
+        sort8(key, n);
+        RingEntry sorted[8];
+        for (std::size_t i = 0; i < n; ++i) sorted[i] = ring[key[i] & 31U];
+        std::copy(sorted, sorted + n, ring.begin());
+    } else {
+        double key[24];
+        for (std::size_t i = 0; i < n; ++i) key[i] = approximate_angle(centre, ring[i]);
+        for (std::size_t i = 1; i < n; ++i) {
+            const RingEntry e = ring[i];
+            const double k = key[i];
+            std::size_t j = i;
+            auto before = [&](std::size_t x) {  // e goes before ring[x]
+                if (e.quadrant != ring[x].quadrant) return e.quadrant < ring[x].quadrant;
+                return k < key[x] || (k == key[x] && e.half_edge < ring[x].half_edge);
+            };
+            for (; j > 0 && before(j - 1); --j) {
+                ring[j] = ring[j - 1];
+                key[j] = key[j - 1];
+            }
+            ring[j] = e;
+            key[j] = k;
+        }
+    }
+    const std::size_t same = confirm(centre, ring);
+    if (same != kWrongOrder) return same;
+    insertion_sort(ring, exact);
+    return first_same_direction(centre, ring);
+}
+
+std::size_t first_same_direction(Point centre, std::span<const RingEntry> ring) {
+    for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
+        if (ring[i].quadrant == ring[i + 1].quadrant &&
+            orient2d(centre, ring[i].target, ring[i + 1].target) == Sign::Zero) {
+            return i;
+        }
+    }
+    return ring.size();
+}
+
+}  // namespace dcel

@@ -1,0 +1,238 @@
+// The pieces build() is made of, each against a plain reference: the lex
+// order against std::sort with lex_less, the ring sort against the angular
+// order computed in rationals (cpp_rational, no rounding), the skip-list
+// status against a std::vector.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <boost/multiprecision/cpp_int.hpp>
+#include <cfloat>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "dcel/error.hpp"
+#include "dcel/lex_order.hpp"
+#include "dcel/ring_sort.hpp"
+#include "dcel/status_list.hpp"
+
+namespace dcel {
+namespace {
+
+using Rational = boost::multiprecision::cpp_rational;
+
+// Doubles that stress exact code: small integers, near-equal large values,
+// subnormals, signed zeros, values near the double limit.
+double nasty_double(std::mt19937_64& rng) {
+    std::uniform_int_distribution<int> kind(0, 7);
+    std::uniform_int_distribution<int> small(-4, 4);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    switch (kind(rng)) {
+        case 0: return small(rng);
+        case 1: return 1e15 + small(rng);
+        case 2: return small(rng) * 0x1p-1074;
+        case 3: return unit(rng) < 0 ? -0.0 : 0.0;
+        case 4: return std::ldexp(unit(rng), 1023);
+        case 5: return std::ldexp(unit(rng), std::uniform_int_distribution<int>(-1074, 1023)(rng));
+        case 6: return unit(rng);
+        default: return small(rng) * (DBL_MAX / 4);
+    }
+}
+
+// ---- Lex order
+
+std::vector<VertexId> reference_order(const std::vector<Point>& pts) {
+    std::vector<VertexId> order;
+    for (Index v = 0; v < pts.size(); ++v) order.emplace_back(v);
+    std::sort(order.begin(), order.end(), [&](VertexId a, VertexId b) {
+        if (lex_less(pts[a.index()], pts[b.index()])) return true;
+        if (lex_less(pts[b.index()], pts[a.index()])) return false;
+        return a < b;
+    });
+    return order;
+}
+
+void expect_lex_order_matches(const std::vector<Point>& pts) {
+    const std::vector<VertexId> expected = reference_order(pts);
+    std::vector<VertexId> dup;  // the first adjacent pair at one point, if any
+    for (std::size_t i = 1; i < expected.size() && dup.empty(); ++i) {
+        if (pts[expected[i - 1].index()] == pts[expected[i].index()]) dup = {expected[i - 1], expected[i]};
+    }
+    try {
+        const LexOrder got = lex_order_checked(pts);
+        ASSERT_TRUE(dup.empty()) << "accepted a duplicate point";
+        ASSERT_EQ(got.vertex_of_rank, expected);
+        for (Index r = 0; r < pts.size(); ++r) EXPECT_EQ(got.rank_of_vertex[got.vertex_of_rank[r].index()], r);
+    } catch (const InvalidInput& e) {
+        ASSERT_FALSE(dup.empty()) << e.what();
+        EXPECT_EQ(e.kind(), InputErrorKind::DuplicatePoint);
+        EXPECT_EQ(e.vertices(), dup);
+    }
+}
+
+TEST(LexOrder, MatchesStdSortOnNastyCoordinates) {
+    std::mt19937_64 rng(7);
+    for (int round = 0; round < 300; ++round) {
+        std::vector<Point> pts(std::uniform_int_distribution<int>(0, 200)(rng));
+        for (Point& p : pts) p = {nasty_double(rng), nasty_double(rng)};
+        expect_lex_order_matches(pts);
+    }
+}
+
+TEST(LexOrder, MatchesStdSortOnSpreadAndClusteredPoints) {
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int round = 0; round < 50; ++round) {
+        std::vector<Point> pts;
+        for (int i = 0; i < 3000; ++i) {
+            // Most spread out, some in one narrow column, a few far away.
+            const int k = i % 10;
+            const double x = k < 7 ? unit(rng) * 1000 : (k < 9 ? 500 + unit(rng) * 1e-9 : unit(rng) * 1e300);
+            pts.push_back({x, std::floor(unit(rng) * 50)});
+        }
+        expect_lex_order_matches(pts);
+    }
+}
+
+TEST(LexOrder, AllOnOneVerticalLineAndSignedZeros) {
+    std::vector<Point> pts;
+    for (int i = 0; i < 1000; ++i) pts.push_back({0.0, static_cast<double>((i * 7919) % 1000)});
+    expect_lex_order_matches(pts);
+    expect_lex_order_matches({{-0.0, 1}, {0.0, 0}, {-0.0, -1}});
+    expect_lex_order_matches({{-0.0, 1}, {0.0, 1}});  // one point: a duplicate
+    expect_lex_order_matches({{-DBL_MAX, 0}, {DBL_MAX, 0}, {0x1p-1074, 0}, {-0x1p-1074, 0}, {0, 0}});
+}
+
+// ---- Ring sort
+
+Rational exact(double v) { return Rational(v); }
+
+// Angular order from east, counterclockwise, in rationals; ties by id.
+bool oracle_before(Point c, const RingEntry& a, const RingEntry& b) {
+    const Rational ax = exact(a.target.x) - exact(c.x), ay = exact(a.target.y) - exact(c.y);
+    const Rational bx = exact(b.target.x) - exact(c.x), by = exact(b.target.y) - exact(c.y);
+    const int ha = (ay > 0 || (ay == 0 && ax > 0)) ? 0 : 1;
+    const int hb = (by > 0 || (by == 0 && bx > 0)) ? 0 : 1;
+    if (ha != hb) return ha < hb;
+    const Rational cross = ax * by - ay * bx;
+    if (cross != 0) return cross > 0;
+    return a.half_edge < b.half_edge;
+}
+
+void expect_ring_sorted(Point c, std::vector<RingEntry> ring) {
+    std::vector<RingEntry> expected = ring;
+    std::sort(expected.begin(), expected.end(), [&](const RingEntry& a, const RingEntry& b) { return oracle_before(c, a, b); });
+    const std::size_t reported = sort_ring(c, ring);
+    ASSERT_EQ(ring.size(), expected.size());
+    for (std::size_t i = 0; i < ring.size(); ++i) EXPECT_EQ(ring[i].half_edge, expected[i].half_edge) << i;
+    std::size_t same = ring.size();
+    for (std::size_t i = 0; i + 1 < ring.size() && same == ring.size(); ++i) {
+        const Rational ax = exact(ring[i].target.x) - exact(c.x), ay = exact(ring[i].target.y) - exact(c.y);
+        const Rational bx = exact(ring[i + 1].target.x) - exact(c.x), by = exact(ring[i + 1].target.y) - exact(c.y);
+        const bool parallel = ax * by == ay * bx;
+        const bool same_way = (ax > 0) == (bx > 0) && (ax < 0) == (bx < 0) && (ay > 0) == (by > 0) && (ay < 0) == (by < 0);
+        if (parallel && same_way) same = i;
+    }
+    EXPECT_EQ(first_same_direction(c, ring), same);
+    EXPECT_EQ(reported, same);
+}
+
+TEST(RingSort, MatchesRationalAngularOrder) {
+    std::mt19937_64 rng(9);
+    for (int round = 0; round < 2000; ++round) {
+        const Point c{nasty_double(rng), nasty_double(rng)};
+        std::vector<RingEntry> ring;
+        const int degree = std::uniform_int_distribution<int>(0, round % 10 == 0 ? 60 : 8)(rng);
+        for (int i = 0; i < degree; ++i) {
+            Point t{nasty_double(rng), nasty_double(rng)};
+            if (t == c) continue;
+            ring.push_back({t, HalfEdgeId(static_cast<Index>(i)), 0, 0});
+        }
+        expect_ring_sorted(c, ring);
+    }
+}
+
+TEST(RingSort, DirectionsAtan2CannotTellApartAndRepeatedDirections) {
+    // (1e15, 1e15+1) and (1e15+1, 1e15+2) from the origin differ by ~5e-31 rad.
+    const double o = 1e15;
+    expect_ring_sorted({0, 0}, {{{o + 1, o + 2}, HalfEdgeId(0), 0, 0},
+                                {{o, o + 1}, HalfEdgeId(1), 0, 0},
+                                {{-o, -o - 1}, HalfEdgeId(2), 0, 0},
+                                {{2 * o, 2 * o + 2}, HalfEdgeId(3), 0, 0},  // same way as h1
+                                {{1, 0}, HalfEdgeId(4), 0, 0},
+                                {{0, -1}, HalfEdgeId(5), 0, 0}});
+    // Every axis direction and the diagonals, twice over, from a subnormal centre.
+    std::vector<RingEntry> ring;
+    Index id = 0;
+    for (int k = 1; k <= 2; ++k) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            for (int dy = -1; dy <= 1; ++dy) {
+                if (dx != 0 || dy != 0) ring.push_back({{dx * k * 0x1p-1070, dy * k * 0x1p-1070}, HalfEdgeId(id++), 0, 0});
+            }
+        }
+    }
+    std::shuffle(ring.begin(), ring.end(), std::mt19937_64(3));
+    expect_ring_sorted({0x1p-1074, 0}, ring);
+    expect_ring_sorted({0, 0}, ring);
+}
+
+TEST(RingSort, SmallRingsWhereTheFloatingPointGuessIsWrong) {
+    // Directions ~1e-31 rad apart: the guessed angles tie or come out
+    // swapped, so the exact check must catch them.
+    std::mt19937_64 rng(11);
+    const double o = 1e15;
+    for (int round = 0; round < 500; ++round) {
+        std::vector<RingEntry> ring;
+        for (Index i = 0; i < 8; ++i) {
+            const double k = std::uniform_int_distribution<int>(0, 3)(rng);
+            const double sx = (rng() & 1U) != 0 ? 1 : -1;
+            const double sy = (rng() & 1U) != 0 ? 1 : -1;
+            ring.push_back({{sx * (o + k), sy * (o + k + 1)}, HalfEdgeId(i), 0, 0});
+        }
+        expect_ring_sorted({0, 0}, ring);
+    }
+}
+
+// ---- Status list
+
+TEST(StatusList, AgreesWithAVectorUnderRandomEdits) {
+    std::mt19937_64 rng(10);
+    for (const Index capacity : {1U, 7U, 100U, 5000U}) {
+        StatusList list(capacity);
+        std::vector<Index> ref;  // bottom to top
+        for (int step = 0; step < 20000; ++step) {
+            const Index node = std::uniform_int_distribution<Index>(0, capacity - 1)(rng);
+            const auto at = std::find(ref.begin(), ref.end(), node);
+            if (at != ref.end()) {
+                ASSERT_TRUE(list.contains(node));
+                list.erase(node);
+                ref.erase(at);
+            } else {
+                ASSERT_FALSE(list.contains(node));
+                // Above a random member, or at the bottom.
+                const std::size_t pos = std::uniform_int_distribution<std::size_t>(0, ref.size())(rng);
+                const Index below = pos == 0 ? StatusList::kNone : ref[pos - 1];
+                list.insert_above(below, node);
+                ref.insert(ref.begin() + static_cast<std::ptrdiff_t>(pos), node);
+            }
+            if (step % 97 != 0) continue;
+            // Walk both ways, and search every partition point.
+            std::vector<Index> up;
+            for (Index x = list.first(); x != StatusList::kNone; x = list.next(x)) up.push_back(x);
+            ASSERT_EQ(up, ref);
+            std::vector<Index> down;
+            for (Index x = list.last(); x != StatusList::kNone; x = list.prev(x)) down.push_back(x);
+            std::reverse(down.begin(), down.end());
+            ASSERT_EQ(down, ref);
+            for (std::size_t k = 0; k <= ref.size(); ++k) {
+                std::vector<char> is_below(capacity, 0);
+                for (std::size_t i = 0; i < k; ++i) is_below[ref[i]] = 1;
+                const Index found = list.first_not_below([&](Index x) { return is_below[x] != 0; });
+                ASSERT_EQ(found, k < ref.size() ? ref[k] : StatusList::kNone);
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace dcel
