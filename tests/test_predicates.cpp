@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <boost/multiprecision/cpp_int.hpp>
+#include <bit>
 #include <cfloat>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -210,6 +212,68 @@ TEST(ExactSum, MatchesRationalsAndRoundsCorrectly) {
         ASSERT_LE(err, abs(expected - exact(std::nextafter(r, INFINITY))));
         ASSERT_LE(err, abs(expected - exact(std::nextafter(r, -INFINITY))));
     }
+}
+
+// Is r the double nearest to `expected` (ties to even), subnormals included?
+// Finite results only.
+bool is_nearest(double r, const Rational& expected) {
+    const Rational err = abs(expected - exact(r));
+    for (const double n : {std::nextafter(r, INFINITY), std::nextafter(r, -INFINITY)}) {
+        if (std::isinf(n)) continue;
+        const Rational other = abs(expected - exact(n));
+        if (other < err) return false;
+        if (other == err && (std::bit_cast<std::uint64_t>(r) & 1U) != 0) return false;  // a tie goes to even
+    }
+    return true;
+}
+
+// Sums near and below the least normal double, scaled by 2^-3 .. 2^3 before
+// rounding: the result must be rounded once. Found by fuzz/oracle: face_area
+// halved a rounded sum, and the conversion rounded to 53 bits before scaling
+// into the subnormal range.
+TEST(ExactSum, RoundsSubnormalAndScaledResultsOnce) {
+    std::mt19937_64 rng(12);
+    for (int i = 0; i < 20000; ++i) {
+        dcel::ExactSum sum;
+        Rational expected = 0;
+        const int terms = std::uniform_int_distribution<int>(1, 4)(rng);
+        for (int k = 0; k < terms; ++k) {
+            // Products from 2^-1140 to 2^-1000, with random significands.
+            const double a = std::ldexp(std::uniform_real_distribution<double>(1, 2)(rng),
+                                        std::uniform_int_distribution<int>(-600, -500)(rng));
+            const double b = std::ldexp(std::uniform_real_distribution<double>(1, 2)(rng),
+                                        std::uniform_int_distribution<int>(-540, -500)(rng));
+            const bool add = k == 0 || rng() % 2 == 0;
+            if (add) {
+                sum.add_product(a, b);
+                expected += exact(a) * exact(b);
+            } else {
+                sum.subtract_product(a, b);
+                expected -= exact(a) * exact(b);
+            }
+        }
+        const int scale = std::uniform_int_distribution<int>(-3, 3)(rng);
+        const Rational scaled = expected * Rational(std::ldexp(1.0, scale));  // exact: 2^scale is a double
+        const double r = sum.to_double(scale);
+        ASSERT_TRUE(is_nearest(r, scaled)) << "scale " << scale << ": " << r;
+    }
+}
+
+TEST(ExactSum, HalvesBeforeRounding) {
+    dcel::ExactSum near_half;  // 2^-1075 (1 + 2^-60): just above half the least subnormal
+    near_half.add_product(0x1p-1074, 0.5);
+    near_half.add_product(0x1p-1074, 0x1p-61);
+    EXPECT_EQ(near_half.to_double(), 0x1p-1074);
+    dcel::ExactSum twice_max;  // 2 DBL_MAX overflows, its half does not
+    twice_max.add_product(DBL_MAX, 2.0);
+    EXPECT_EQ(twice_max.to_double(), INFINITY);
+    EXPECT_EQ(twice_max.to_double(-1), DBL_MAX);
+    dcel::ExactSum odd;  // 3 * 2^-1074 halved: 1.5 ulps, a tie, goes to the even 2 ulps
+    odd.add_product(0x1.8p-1073, 1.0);
+    EXPECT_EQ(odd.to_double(-1), 0x1p-1073);
+    odd.subtract_product(0x1p-1072, 1.0);  // now -2^-1074, halved: a tie between 0 and one ulp
+    EXPECT_EQ(odd.to_double(-1), 0.0);
+    EXPECT_TRUE(std::signbit(odd.to_double(-1)));
 }
 
 TEST(ExactSum, CancelsExactly) {

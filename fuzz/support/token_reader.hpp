@@ -5,6 +5,7 @@
 // so that seeds and minimized crashes can be read and written by hand. Every
 // byte string is a valid input: words are runs of letters and '_', numbers
 // are whatever std::from_chars reads as a double at a digit, '-' or '.'
+// (through dcel::io::parse_double, which also works on libc++)
 // (so 1e15, -0, 5e-324 and 0x-free decimals all work; "inf" and "nan" are
 // numbers too), '#' starts a comment that runs to the end of the line, and
 // every other byte separates tokens. A mutation that
@@ -12,13 +13,14 @@
 // meaningful inputs. At the end, next() keeps returning an End token.
 #pragma once
 
-#include <charconv>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
 #include <string_view>
+
+#include "dcel/io/decimal.hpp"
 
 namespace dcel::fuzz {
 
@@ -87,7 +89,7 @@ private:
             if (starts_number(c)) {
                 double v = 0;
                 const char* first = text_.data() + pos_;
-                const auto [ptr, ec] = std::from_chars(first, text_.data() + text_.size(), v);
+                const auto [ptr, ec] = io::parse_double(first, text_.data() + text_.size(), v);
                 if (ec == std::errc() && ptr != first) {
                     pos_ += static_cast<std::size_t>(ptr - first);
                     current_ = Token{Token::Kind::Number, {}, v};

@@ -1,11 +1,11 @@
 #include "cli_support.hpp"
 
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 
+#include "dcel/io/decimal.hpp"
 #include "dcel/io/graph_json.hpp"
 
 namespace dcel::cli {
@@ -39,7 +39,7 @@ PlanarGraph load_graph(const std::string& path) {
 double parse_coordinate(const std::string& text, const std::string& what) {
     double v = 0;
     const char* const end = text.data() + text.size();
-    const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+    const auto [ptr, ec] = io::parse_double(text.data(), end, v);  // std::from_chars where the library has it
     if (ec != std::errc() || ptr != end || !std::isfinite(v)) {
         throw UsageError(what + ": expected a finite number, found \"" + text + "\"");
     }

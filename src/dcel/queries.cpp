@@ -18,7 +18,9 @@ void add_cycle(const Dcel& d, HalfEdgeId start, ExactSum& sum) {
     }
 }
 
-Area halved(const ExactSum& twice) { return {twice.to_double() / 2, twice.sign()}; }
+// Halved before rounding: twice an area may overflow, or round in the
+// subnormal range, where the area itself does not.
+Area halved(const ExactSum& twice) { return {twice.to_double(-1), twice.sign()}; }
 
 }  // namespace
 

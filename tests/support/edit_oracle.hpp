@@ -1,6 +1,6 @@
 // Test support: edit steps and the oracle that says whether each must
 // succeed, shared by the RapidCheck properties (properties/edit) and the
-// fuzz harness (fuzz/edit_sequence.cpp).
+// fuzz harness (fuzz/edit.cpp).
 //
 // A step names its operation and small numbers that pick elements (modulo
 // the current counts) and points, so every sequence of steps applies to

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <ostream>
+#include <tuple>
 #include <vector>
 
 #include "dcel/dcel.hpp"
@@ -33,7 +34,11 @@ struct FaceShape {
     std::vector<Cycle> holes;  // sorted
     std::vector<Index> isolated;
     friend bool operator==(const FaceShape&, const FaceShape&) = default;
-    friend auto operator<=>(const FaceShape&, const FaceShape&) = default;
+    // Not a defaulted <=>: libc++ before 16 gives std::vector no <=>, and the
+    // fuzz harnesses are also built against libc++ (OSS-Fuzz).
+    friend bool operator<(const FaceShape& a, const FaceShape& b) {
+        return std::tie(a.outer, a.holes, a.isolated) < std::tie(b.outer, b.holes, b.isolated);
+    }
 };
 
 inline std::ostream& operator<<(std::ostream& os, const Cycle& c) {

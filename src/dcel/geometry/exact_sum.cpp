@@ -1,5 +1,6 @@
 #include "dcel/geometry/exact_sum.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -72,7 +73,7 @@ Sign ExactSum::sign() const {
     return c > 0 ? Sign::Positive : (c < 0 ? Sign::Negative : Sign::Zero);
 }
 
-double ExactSum::to_double() const {
+double ExactSum::to_double(int scale) const {
     const int c = compare(positive_, negative_);
     if (c == 0) return 0.0;
     const Register& big = c > 0 ? positive_ : negative_;
@@ -87,7 +88,7 @@ double ExactSum::to_double() const {
     int top = kLimbs - 1;
     while (diff[static_cast<std::size_t>(top)] == 0) --top;
     // Gather the 64 most significant bits, and fold every bit below them into
-    // the lowest one (a sticky bit) so the conversion rounds correctly.
+    // the lowest one (a sticky bit): enough to round to at most 53 bits.
     const auto t = static_cast<std::size_t>(top);
     const int lead = std::countl_zero(diff[t]);
     std::uint64_t head = diff[t] << lead;
@@ -98,8 +99,21 @@ double ExactSum::to_double() const {
         for (std::size_t i = 0; i + 1 < t && !sticky; ++i) sticky = diff[i] != 0;
     }
     if (sticky) head |= 1U;
-    const int exponent = top * 64 - lead + kLowestExponent;  // weight of head's bit 0
-    const double magnitude = std::ldexp(static_cast<double>(head), exponent);
+    // The value is head * 2^exponent, with head's top bit set. Round it to
+    // the result's precision here, in integers: 53 bits, fewer where the
+    // result is subnormal (its last bit weighs 2^-1074). Converting head to
+    // double and then scaling would round twice in the subnormal range.
+    const long exponent = static_cast<long>(top) * 64 - lead + kLowestExponent + scale;  // weight of head's bit 0
+    const long drop = std::max(11L, -1074 - exponent);  // low bits of head that do not fit
+    if (drop > 64) return c > 0 ? 0.0 : -0.0;  // below 2^-1075, half the least subnormal
+    const std::uint64_t kept = drop == 64 ? 0 : head >> drop;
+    const std::uint64_t rest = drop == 64 ? head : head & ((std::uint64_t{1} << drop) - 1);
+    const std::uint64_t half = std::uint64_t{1} << (drop - 1);
+    const std::uint64_t rounded = kept + ((rest > half || (rest == half && (kept & 1U) != 0)) ? 1 : 0);
+    // rounded <= 2^53 is exact as a double, and so is the scaling, unless it
+    // overflows to infinity, which is then the correctly rounded result.
+    const long at = exponent + drop;
+    const double magnitude = at > 2000 ? HUGE_VAL : std::ldexp(static_cast<double>(rounded), static_cast<int>(at));
     return c > 0 ? magnitude : -magnitude;
 }
 

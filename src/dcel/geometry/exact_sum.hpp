@@ -25,8 +25,10 @@ public:
     void subtract(double a) { subtract_product(a, 1.0); }
 
     [[nodiscard]] Sign sign() const;
-    // The sum rounded to the nearest double (ties to even); +-inf past DBL_MAX.
-    [[nodiscard]] double to_double() const;
+    // The sum times 2^scale, rounded once to the nearest double (ties to
+    // even), subnormals included; +-inf past DBL_MAX. The scale is applied
+    // before rounding, so half a sum (scale -1) is not rounded twice.
+    [[nodiscard]] double to_double(int scale = 0) const;
 
 private:
     static constexpr int kLimbs = 68;

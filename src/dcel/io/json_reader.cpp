@@ -6,6 +6,8 @@
 #include <cmath>
 #include <system_error>
 
+#include "dcel/io/decimal.hpp"
+
 namespace dcel::io {
 
 namespace {
@@ -679,7 +681,7 @@ double JsonReader::read_double_slow(std::string_view expected) {
     const std::size_t begin = pos_;
     const std::size_t end = scan_number();
     double value = 0;
-    const auto [ptr, ec] = std::from_chars(text_.data() + begin, text_.data() + end, value);
+    const auto [ptr, ec] = parse_double(text_.data() + begin, text_.data() + end, value);  // from_chars, or strtod_l
     if (ec == std::errc() && ptr == text_.data() + end) {
         pos_ = end;
         return value;

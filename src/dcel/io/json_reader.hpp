@@ -19,7 +19,9 @@
 //    per-element steps are inline. Doubles of up to 15 digits without an
 //    exponent are converted exactly in place (an exact integer divided by an
 //    exact power of ten: one correctly rounded division); all others go
-//    through std::from_chars, which is correctly rounded in libstdc++ >= 12.
+//    through std::from_chars, which is correctly rounded in libstdc++ >= 12
+//    (or, where the library lacks it, as in libc++ before LLVM 20, through
+//    strtod_l: see decimal.hpp).
 //    Output uses std::to_chars (shortest round trip). The target is >= 200
 //    MB/s reading a large graph document.
 //

@@ -29,6 +29,11 @@ using Rational = boost::multiprecision::cpp_rational;
 // Twice the signed area of a closed polygon (counterclockwise positive).
 [[nodiscard]] Rational twice_area(const std::vector<Point>& ring);
 
+// Is v the double nearest to `exact` (ties to even; +-inf past the point
+// where rounding overflows)? Decided in rationals, so it checks a claim of
+// correct rounding without trusting any conversion.
+[[nodiscard]] bool is_nearest_double(double v, const Rational& exact);
+
 // Is p strictly inside the closed polygon ring? p must not lie on it. Counts
 // the crossings of the ray from p towards +x (half-open in y), so weakly
 // simple rings (a dangling edge walked there and back) count correctly.

@@ -1,7 +1,7 @@
-// Read-only views of a built DCEL for the properties: its boundary cycles as
-// vertex sequences, and its faces as vertex-id shapes (tests/support's
-// FaceShape) that can be renamed or mirrored to compare two DCELs of related
-// graphs.
+// Read-only views of a built DCEL for the properties and the fuzz harnesses:
+// its boundary cycles as vertex sequences, and its faces as vertex-id shapes
+// (face_shapes.hpp's FaceShape) that can be renamed or mirrored to compare
+// two DCELs of related graphs.
 #pragma once
 
 #include <vector>

@@ -1,7 +1,10 @@
 #include "support/exact_oracle.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 
 namespace dcel::props {
@@ -58,6 +61,22 @@ Rational twice_area(const std::vector<Point>& ring) {
         sum += exact(a.x) * exact(b.y) - exact(a.y) * exact(b.x);
     }
     return sum;
+}
+
+bool is_nearest_double(double v, const Rational& exact) {
+    constexpr double kMax = std::numeric_limits<double>::max();
+    const Rational overflow = Rational(kMax) + Rational(std::ldexp(1.0, 970));  // halfway to 2^1024
+    if (std::isinf(v)) return v > 0 ? exact >= overflow : exact <= -overflow;
+    if (!std::isfinite(v)) return false;
+    const Rational error = abs(Rational(v) - exact);
+    for (const double neighbour : {std::nextafter(v, HUGE_VAL), std::nextafter(v, -HUGE_VAL)}) {
+        if (std::isinf(neighbour)) continue;  // beyond v lies overflow, checked above by symmetry
+        const Rational other = abs(Rational(neighbour) - exact);
+        if (other < error) return false;
+        // A tie goes to the even significand: the last bit of the pattern.
+        if (other == error && (std::bit_cast<std::uint64_t>(std::fabs(v)) & 1U) != 0) return false;
+    }
+    return std::fabs(v) < kMax || abs(exact) < overflow;
 }
 
 bool strictly_inside(Point p, const std::vector<Point>& ring) {
