@@ -6,7 +6,8 @@
 #include "commands.hpp"
 #include "dcel/error.hpp"
 
-int main(int argc, char** argv) {
+// Setting up the parser can throw only std::bad_alloc, and terminating is right then.
+int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     using namespace dcel::cli;
     CLI::App app{"dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
                  "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",

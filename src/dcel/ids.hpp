@@ -25,7 +25,8 @@ public:
     [[nodiscard]] constexpr Index index() const { return index_; }
     // "is_null" rather than "is_valid": a non-null id may still be out of range.
     [[nodiscard]] constexpr bool is_null() const { return index_ == kNoIndex; }
-    constexpr auto operator<=>(const Id&) const = default;
+    // clang-tidy 14 takes the defaulted <=> for a comparison with literal 0.
+    constexpr auto operator<=>(const Id&) const = default;  // NOLINT(modernize-use-nullptr)
 
     [[nodiscard]] std::string str() const {
         return is_null() ? std::string(1, Tag::prefix) + "-" : Tag::prefix + std::to_string(index_);

@@ -13,7 +13,7 @@ namespace {
 
 struct Keyed {
     Point p;
-    Index id;
+    Index id = 0;
 };
 
 bool keyed_less(const Keyed& a, const Keyed& b) {
@@ -22,7 +22,7 @@ bool keyed_less(const Keyed& a, const Keyed& b) {
     return a.id < b.id;
 }
 
-void insertion_sort(Keyed* first, Keyed* last) {
+void insertion_sort(Keyed* first, const Keyed* last) {
     for (Keyed* i = first + 1; i < last; ++i) {
         const Keyed k = *i;
         Keyed* j = i;
@@ -77,7 +77,7 @@ void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
         return;
     }
     const std::vector<Index> ends = distribute(first, last, scratch, [](const Keyed& k) { return k.p.y; });
-    std::copy(scratch, scratch + (last - first), first);
+    std::copy(scratch, scratch + (last - first), first);  // NOLINT(readability-suspicious-call-argument): back from scratch
     Index begin = 0;
     for (const Index end : ends) {
         if (end - begin > 16) {

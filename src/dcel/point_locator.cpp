@@ -167,7 +167,7 @@ void PointLocator::insert(Index s) {
         }
         if (j == 0 && left_part != kNoIndex) {
             nodes_.push_back(root);
-            const Index inner = static_cast<Index>(nodes_.size() - 1);
+            const auto inner = static_cast<Index>(nodes_.size() - 1);
             root = Node{NodeKind::X, seg.left.index(), leaf_of(left_part), inner};
         }
         nodes_[old_leaf] = root;

@@ -46,8 +46,8 @@ void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& r
     const Index groups = (n >> shift) + 1;
 
     struct Record {
-        Index origin;
-        Index target;
+        Index origin = 0;
+        Index target = 0;
         HalfEdgeId half_edge;
     };
     std::vector<Record> records(2 * static_cast<std::size_t>(m));

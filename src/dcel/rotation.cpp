@@ -2,7 +2,7 @@
 
 namespace dcel::detail {
 
-HalfEdgeId outgoing_in_direction(const Dcel& d, VertexId v, Direction dir) {
+HalfEdgeId outgoing_in_direction(const Dcel& d, VertexId v, const Direction& dir) {
     const HalfEdgeId start = d.out(v);
     if (start.is_null()) return {};
     for (const HalfEdgeId h : d.around_origin_cw(start)) {
@@ -11,7 +11,7 @@ HalfEdgeId outgoing_in_direction(const Dcel& d, VertexId v, Direction dir) {
     return {};
 }
 
-HalfEdgeId wedge_after(const Dcel& d, VertexId v, Direction dir) {
+HalfEdgeId wedge_after(const Dcel& d, VertexId v, const Direction& dir) {
     const Point c = d.point(v);
     for (const HalfEdgeId r : d.around_origin_cw(d.out(v))) {
         const HalfEdgeId s = d.next(Dcel::twin(r));  // clockwise of r

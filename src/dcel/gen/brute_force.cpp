@@ -29,7 +29,8 @@ std::string point_text(Point p) { return "(" + std::to_string(p.x) + ", " + std:
 Sign exact_orient(Point a, Point b, Point c) {
     if (small_integer(a.x) && small_integer(a.y) && small_integer(b.x) && small_integer(b.y) && small_integer(c.x) &&
         small_integer(c.y)) {
-        __extension__ typedef __int128 Wide;  // __extension__: no -Wpedantic warning
+        // __extension__ (no -Wpedantic warning) takes the typedef form only.
+        __extension__ typedef __int128 Wide;  // NOLINT(modernize-use-using)
         const Wide acx = static_cast<Wide>(static_cast<std::int64_t>(a.x) - static_cast<std::int64_t>(c.x));
         const Wide acy = static_cast<Wide>(static_cast<std::int64_t>(a.y) - static_cast<std::int64_t>(c.y));
         const Wide bcx = static_cast<Wide>(static_cast<std::int64_t>(b.x) - static_cast<std::int64_t>(c.x));

@@ -24,7 +24,7 @@ PlanarGraph grid_with_holes(Rng& rng, std::size_t n) {
     // rectangle's inside becomes a component sitting in a hole.
     struct Rect {
         std::int64_t i0, i1, j0, j1;
-        bool inside(std::int64_t i, std::int64_t j) const { return i0 <= i && i <= i1 && j0 <= j && j <= j1; }
+        [[nodiscard]] bool inside(std::int64_t i, std::int64_t j) const { return i0 <= i && i <= i1 && j0 <= j && j <= j1; }
     };
     std::vector<Rect> islands;
     for (std::int64_t k = rng.between(0, 3); k > 0 && w > 2 && h > 2; --k) {
@@ -55,7 +55,8 @@ namespace {
 // directions at L-infinity radius in [r/2, r]. It contains the square of
 // half-side r/4 - 1 strictly (each edge from radius a to radius b, a, b >= r/2,
 // passes outside it), which is where the children go.
-void nest(GraphBuilder& b, Rng& rng, std::int64_t cx, std::int64_t cy, std::int64_t r, std::size_t n) {
+// Recursive on purpose: the depth is at most log4 of the radius.
+void nest(GraphBuilder& b, Rng& rng, std::int64_t cx, std::int64_t cy, std::int64_t r, std::size_t n) {  // NOLINT(misc-no-recursion)
     static const Step kEight[] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
     static const Step kFour[] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     const bool eight = rng.chance(2, 3);

@@ -8,7 +8,7 @@
 namespace dcel::gen {
 
 std::optional<VertexId> GraphBuilder::add_point(Point p) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || at_.count(p) != 0) return std::nullopt;
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || at_.contains(p)) return std::nullopt;
     for (const GraphEdge& e : g_.edges) {
         if (on_closed_segment(g_.vertices[e.u.index()], g_.vertices[e.v.index()], p)) return std::nullopt;
     }
@@ -25,7 +25,7 @@ std::optional<VertexId> GraphBuilder::point(Point p) {
 }
 
 bool GraphBuilder::can_add_edge(VertexId u, VertexId v) const {
-    if (u == v || edges_.count(std::minmax(u.index(), v.index())) != 0) return false;
+    if (u == v || edges_.contains(std::minmax(u.index(), v.index()))) return false;
     const Point a = g_.vertices[u.index()];
     const Point b = g_.vertices[v.index()];
     for (const GraphEdge& e : g_.edges) {

@@ -22,7 +22,7 @@ public:
     std::optional<VertexId> point(Point p);
     // Adds edge u-v when that keeps the graph valid; false otherwise.
     bool add_edge(VertexId u, VertexId v);
-    bool can_add_edge(VertexId u, VertexId v) const;
+    [[nodiscard]] bool can_add_edge(VertexId u, VertexId v) const;
     // Convenience: the points (added or found) and the edge between them.
     bool add_segment(Point a, Point b);
 

@@ -60,7 +60,8 @@ std::optional<PlanarGraph> try_attempt(const PlanarGraph& g, std::size_t e, cons
     auto pt = [&](VertexId v) { return out.vertices[v.index()]; };
     const GraphEdge target = g.edges[e];
     for (std::size_t k = old_edges; k < out.edges.size(); ++k) {
-        const Point p = pt(out.edges[k].u), q = pt(out.edges[k].v);
+        const Point p = pt(out.edges[k].u);
+        const Point q = pt(out.edges[k].v);
         for (std::size_t j = 0; j < old_edges; ++j) {
             const bool conflict = segments_conflict(p, q, pt(out.edges[j].u), pt(out.edges[j].v));
             if (conflict != (j == e)) return std::nullopt;
@@ -80,9 +81,9 @@ std::optional<PlanarGraph> try_attempt(const PlanarGraph& g, std::size_t e, cons
         }
     }
     // New points must not lie on old edges other than e.
-    for (std::size_t i = 0; i < a.new_points.size(); ++i) {
+    for (const Point& np : a.new_points) {
         for (std::size_t j = 0; j < old_edges; ++j) {
-            if (j != e && on_closed_segment(pt(out.edges[j].u), pt(out.edges[j].v), a.new_points[i])) return std::nullopt;
+            if (j != e && on_closed_segment(pt(out.edges[j].u), pt(out.edges[j].v), np)) return std::nullopt;
         }
     }
     if (!find_problem(out)) return std::nullopt;  // the defect must be real

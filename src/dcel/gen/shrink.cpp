@@ -22,7 +22,7 @@ bool is_integer(double v) { return std::trunc(v) == v; }
 
 std::size_t non_integers(const PlanarGraph& g) {
     std::size_t n = 0;
-    for (const Point& p : g.vertices) n += static_cast<std::size_t>(!is_integer(p.x)) + !is_integer(p.y);
+    for (const Point& p : g.vertices) n += static_cast<std::size_t>(!is_integer(p.x)) + static_cast<std::size_t>(!is_integer(p.y));
     return n;
 }
 

@@ -10,17 +10,15 @@ namespace {
 
 struct Decomposed {
     std::uint64_t mantissa;  // < 2^53; zero for +-0
-    int exponent;            // value = mantissa * 2^exponent
-    bool negative;
+    int exponent;            // |value| = mantissa * 2^exponent (callers take the sign from std::signbit)
 };
 
 Decomposed decompose(double v) {
     const auto bits = std::bit_cast<std::uint64_t>(v);
-    const bool negative = (bits >> 63U) != 0;
     const auto biased = static_cast<int>((bits >> 52U) & 0x7FFU);
     const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52U) - 1);
-    if (biased == 0) return {fraction, -1074, negative};  // zero or subnormal
-    return {fraction | (std::uint64_t{1} << 52U), biased - 1075, negative};
+    if (biased == 0) return {fraction, -1074};  // zero or subnormal
+    return {fraction | (std::uint64_t{1} << 52U), biased - 1075};
 }
 
 }  // namespace

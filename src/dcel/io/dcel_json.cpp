@@ -77,6 +77,8 @@ std::vector<std::vector<Index>> read_cycles(JsonReader& r, const CountLimits& li
         if (cycles.size() >= limits.faces) too_large(r, limits.faces, "faces");
         std::vector<Index>& cycle = cycles.emplace_back();
         r.begin_array("a face cycle [v, ...]");
+        // cycles does not grow while the reference is in use, in this loop.
+        // cppcheck-suppress invalidContainerReference
         while (r.next_element()) cycle.push_back(r.read_index(kVertexIndex));
     }
     return cycles;

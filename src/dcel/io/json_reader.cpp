@@ -47,7 +47,7 @@ std::size_t utf8_length(std::string_view s, std::size_t i, std::uint32_t* code_p
     const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
     const unsigned char b0 = byte(i);
     if (b0 < 0x80) {
-        if (code_point) *code_point = b0;
+        if (code_point != nullptr) *code_point = b0;
         return 1;
     }
     std::size_t len = 0;
@@ -71,7 +71,7 @@ std::size_t utf8_length(std::string_view s, std::size_t i, std::uint32_t* code_p
     for (std::size_t k = 2; k < len; ++k) {
         if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
     }
-    if (code_point) {
+    if (code_point != nullptr) {
         std::uint32_t cp = b0 & (0xFFU >> (len + 1));
         for (std::size_t k = 1; k < len; ++k) cp = (cp << 6) | (byte(i + k) & 0x3FU);
         *code_point = cp;
@@ -249,7 +249,7 @@ DecimalParts decompose(std::string_view tok) {
     if (i < tok.size() && (tok[i] == 'e' || tok[i] == 'E')) {
         ++i;
         bool negative_exponent = false;
-        if (tok[i] == '+' || tok[i] == '-') negative_exponent = tok[i++] == '-';
+        if (i < tok.size() && (tok[i] == '+' || tok[i] == '-')) negative_exponent = tok[i++] == '-';
         constexpr std::int64_t kCap = std::int64_t{1} << 50;  // far beyond any double, far below overflow
         for (; i < tok.size(); ++i) exponent = std::min(kCap, exponent * 10 + (tok[i] - '0'));
         if (negative_exponent) exponent = -exponent;
@@ -338,9 +338,11 @@ void JsonReader::fail_syntax(std::size_t offset, std::string_view message) const
 
 void JsonReader::fail_type(std::string_view expected) {
     const JsonType t = peek();
-    bool escaped = false;
     if (t == JsonType::Number) static_cast<void>(scan_number());  // a malformed number is a syntax error first
-    if (t == JsonType::String) static_cast<void>(scan_string(escaped));
+    if (t == JsonType::String) {
+        bool escaped = false;
+        static_cast<void>(scan_string(escaped));
+    }
     fail(InputErrorKind::Shape, "expected " + std::string(expected) + ", found " + describe(t));
 }
 

@@ -317,9 +317,12 @@ DCEL_JSON_HOT inline Index JsonReader::read_index(std::string_view noun) {
 // writers' loops do no per-token capacity checks. Call flush() at the end.
 class JsonWriter {
 public:
+    // buf_ is left uninitialized: bytes up to used_ are written before they are read.
+    // cppcheck-suppress uninitMemberVar
     explicit JsonWriter(std::string& out) : out_(out) {}
     JsonWriter(const JsonWriter&) = delete;
     JsonWriter& operator=(const JsonWriter&) = delete;
+    ~JsonWriter() = default;
 
     // A string literal, written as is.
     template <std::size_t N>
