@@ -87,17 +87,22 @@ std::size_t count_cycles(const Dcel& d) {
 std::vector<Impl> implementations() {
     auto always = [](const Case&, const PlanarGraph&) { return true; };
     std::vector<Impl> impls;
-    impls.push_back({"dcel", [](const PlanarGraph& g, Cycles* c) {
+    impls.push_back({"dcel",
+                     [](const PlanarGraph& g, Cycles* c) {
                          const Dcel d = build(g);
                          if (c != nullptr) *c = dcel_cycles(d);
                          return count_cycles(d);
-                     }, always});
-    impls.push_back({"dcel-unchecked", [](const PlanarGraph& g, Cycles* c) {
+                     },
+                     always});
+    impls.push_back({"dcel-unchecked",
+                     [](const PlanarGraph& g, Cycles* c) {
                          const Dcel d = build(g, {.check_crossings = false});
                          if (c != nullptr) *c = dcel_cycles(d);
                          return count_cycles(d);
-                     }, always});
-    impls.push_back({"atan2", [](const PlanarGraph& g, Cycles* c) {
+                     },
+                     always});
+    impls.push_back({"atan2",
+                     [](const PlanarGraph& g, Cycles* c) {
                          Cycles cycles = atan2_cycles(g);
                          const std::size_t n = cycles.size();
                          if (c != nullptr) *c = std::move(cycles);
@@ -105,12 +110,15 @@ std::vector<Impl> implementations() {
                      },
                      // O(sum of d^2): a star of degree 1e6 would take minutes.
                      [](const Case& k, const PlanarGraph& g) { return k.family != "star" || g.edges.size() <= 100000; }});
-    impls.push_back({"boost", [](const PlanarGraph& g, Cycles* c) {
+    impls.push_back({"boost",
+                     [](const PlanarGraph& g, Cycles* c) {
                          PeerResult r = boost_geometric_cycles(g, c != nullptr);
                          if (c != nullptr) *c = std::move(r.cycles);
                          return r.count;
-                     }, always});
-    impls.push_back({"boost-bm", [](const PlanarGraph& g, Cycles* c) {
+                     },
+                     always});
+    impls.push_back({"boost-bm",
+                     [](const PlanarGraph& g, Cycles* c) {
                          PeerResult r = boost_bm_cycles(g, c != nullptr);
                          if (c != nullptr) *c = std::move(r.cycles);
                          return r.count;
@@ -118,7 +126,8 @@ std::vector<Impl> implementations() {
                      // Superlinear: 48 s on a 2e6-edge grid (NOTES.md).
                      [](const Case&, const PlanarGraph& g) { return g.edges.size() <= 350000; }});
 #ifdef DCEL_BENCH_HAVE_CGAL
-    impls.push_back({"cgal", [](const PlanarGraph& g, Cycles* c) {
+    impls.push_back({"cgal",
+                     [](const PlanarGraph& g, Cycles* c) {
                          PeerResult r = cgal_cycles(g, c != nullptr);
                          if (c != nullptr) *c = std::move(r.cycles);
                          return r.count;
@@ -273,12 +282,13 @@ void measure_json(const Case& k, const PlanarGraph& g, const Options& o) {
         const double mb_s = row.bytes / 1e6 / row.seconds;
         const double ns = row.seconds * 1e9 / edges;
         if (o.json) {
-            std::printf("{\"input\": \"%s\", \"impl\": \"%s\", \"edges\": %zu, \"ns_per_edge\": %.1f, "
-                        "\"bytes_per_edge\": null, \"mb_per_s\": %.0f, \"text_bytes\": %.0f}\n",
-                        k.input.c_str(), row.name, g.edges.size(), ns, mb_s, row.bytes);
+            std::printf(
+                "{\"input\": \"%s\", \"impl\": \"%s\", \"edges\": %zu, \"ns_per_edge\": %.1f, "
+                "\"bytes_per_edge\": null, \"mb_per_s\": %.0f, \"text_bytes\": %.0f}\n",
+                k.input.c_str(), row.name, g.edges.size(), ns, mb_s, row.bytes);
         } else {
-            std::printf("%-24s %9zu  %-15s %10.1f %8s   %.0f MB/s of %.1f MB\n", k.input.c_str(), g.edges.size(),
-                        row.name, ns, "-", mb_s, row.bytes / 1e6);
+            std::printf("%-24s %9zu  %-15s %10.1f %8s   %.0f MB/s of %.1f MB\n", k.input.c_str(), g.edges.size(), row.name,
+                        ns, "-", mb_s, row.bytes / 1e6);
         }
     }
 }
@@ -304,8 +314,8 @@ int run(const Options& o) {
     const std::vector<Impl> impls = implementations();
     bool ok = true;
     if (!o.json && !o.verify) {
-        std::printf("%-24s %9s  %-15s %10s %8s %9s %9s %10s\n", "input", "edges", "impl", "ns/edge", "B/edge",
-                    "x dcel", "x uncheck", "wall ns/e");
+        std::printf("%-24s %9s  %-15s %10s %8s %9s %9s %10s\n", "input", "edges", "impl", "ns/edge", "B/edge", "x dcel",
+                    "x uncheck", "wall ns/e");
     }
     for (const Case& k : cases()) {
         if (o.small && !k.small) continue;
@@ -327,9 +337,10 @@ int run(const Options& o) {
             if (impl.name == "dcel") full = ns;
             if (impl.name == "dcel-unchecked") unchecked = ns;
             if (o.json) {
-                std::printf("{\"input\": \"%s\", \"impl\": \"%s\", \"edges\": %zu, \"ns_per_edge\": %.1f, "
-                            "\"bytes_per_edge\": %.1f, \"wall_ns_per_edge\": %.1f, \"runs\": %zu, \"cycles\": %zu}\n",
-                            k.input.c_str(), impl.name.c_str(), g.edges.size(), ns, bytes, wall_ns, m.runs, m.cycles);
+                std::printf(
+                    "{\"input\": \"%s\", \"impl\": \"%s\", \"edges\": %zu, \"ns_per_edge\": %.1f, "
+                    "\"bytes_per_edge\": %.1f, \"wall_ns_per_edge\": %.1f, \"runs\": %zu, \"cycles\": %zu}\n",
+                    k.input.c_str(), impl.name.c_str(), g.edges.size(), ns, bytes, wall_ns, m.runs, m.cycles);
             } else {
                 std::printf("%-24s %9zu  %-15s %10.1f %8.1f %9.2f %9.2f %10.1f\n", k.input.c_str(), g.edges.size(),
                             impl.name.c_str(), ns, bytes, ns / full, ns / unchecked, wall_ns);
@@ -399,9 +410,10 @@ int main(int argc, char** argv) {
         } else if (a == "--write-input" && i + 2 < argc) {
             return dcel::bench::write_input(argv[i + 1], argv[i + 2]);
         } else {
-            std::fprintf(stderr,
-                         "usage: dcel_bench [--small] [--json] [--verify] [--repeat N] [--only INPUT] [--impl IMPL] [--no-io]\n"
-                         "       dcel_bench --write-input INPUT FILE\n");
+            std::fprintf(
+                stderr,
+                "usage: dcel_bench [--small] [--json] [--verify] [--repeat N] [--only INPUT] [--impl IMPL] [--no-io]\n"
+                "       dcel_bench --write-input INPUT FILE\n");
             return 2;
         }
     }

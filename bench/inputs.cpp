@@ -303,7 +303,8 @@ PlanarGraph spatially_ordered(const std::vector<IPoint>& pts, std::vector<std::p
         if (used[i] != 0) order.push_back(i);
     }
     std::vector<std::uint64_t> key(n);
-    for (std::uint32_t i = 0; i < n; ++i) key[i] = hilbert(static_cast<std::uint64_t>(pts[i].x), static_cast<std::uint64_t>(pts[i].y), 31);
+    for (std::uint32_t i = 0; i < n; ++i)
+        key[i] = hilbert(static_cast<std::uint64_t>(pts[i].x), static_cast<std::uint64_t>(pts[i].y), 31);
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
     std::vector<std::uint32_t> renumber(n, 0);
     PlanarGraph g;
@@ -423,7 +424,8 @@ PlanarGraph nested_squares(std::size_t n) {
 PlanarGraph collinear_chain(std::size_t n) {
     PlanarGraph g;
     for (std::size_t i = 0; i < n; ++i) g.vertices.push_back({static_cast<double>(2 * i), static_cast<double>(i)});
-    for (std::size_t i = 0; i + 1 < n; ++i) g.edges.push_back({VertexId(static_cast<Index>(i)), VertexId(static_cast<Index>(i + 1))});
+    for (std::size_t i = 0; i + 1 < n; ++i)
+        g.edges.push_back({VertexId(static_cast<Index>(i)), VertexId(static_cast<Index>(i + 1))});
     return g;
 }
 

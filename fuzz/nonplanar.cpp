@@ -56,9 +56,9 @@ void check_graph(const PlanarGraph& g) {
     } catch (const InvalidInput& e) {
         const Defect k = defect_of(e.kind());
         FUZZ_CHECK(defects.any(), "build rejects a graph brute force finds valid: " << e.what());
-        FUZZ_CHECK(k != Defect::Count && has(defects, k),
-                   "build reports " << to_string(e.kind()) << " but brute force finds " << describe(defects) << ": "
-                                    << e.what());
+        FUZZ_CHECK(k != Defect::Count && has(defects, k), "build reports " << to_string(e.kind())
+                                                                           << " but brute force finds " << describe(defects)
+                                                                           << ": " << e.what());
         return;
     }
     FUZZ_CHECK(defects.none(), "build accepts a graph with " << describe(defects));
@@ -70,9 +70,9 @@ void check_graph(const PlanarGraph& g) {
     FUZZ_CHECK(j.valid, "the reference disagrees with build: " << j.reason);
 
     const DcelDump unchecked = to_dump(build(g, BuildOptions{.check_crossings = false}));
-    FUZZ_CHECK(unchecked.half_edges == dump.half_edges && unchecked.faces == dump.faces &&
-                   unchecked.vertex_out == dump.vertex_out,
-               "build without the crossing check differs on a valid graph");
+    FUZZ_CHECK(
+        unchecked.half_edges == dump.half_edges && unchecked.faces == dump.faces && unchecked.vertex_out == dump.vertex_out,
+        "build without the crossing check differs on a valid graph");
 }
 
 // On input that breaks its promise, build() without the crossing check may

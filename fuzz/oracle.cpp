@@ -54,8 +54,8 @@ std::string describe(const GeneratedGraph& c) {
 void check_cycles(const Dcel& d, const PlanarGraph& g) {
     const std::vector<props::VertexCycle> ours = props::dcel_cycles(d);
     const std::vector<props::VertexCycle> boost = props::boost_face_cycles(g);
-    FUZZ_CHECK(ours == boost, "the DCEL has " << ours.size() << " boundary cycles, Boost's traversal "
-                                              << boost.size() << "; they differ");
+    FUZZ_CHECK(ours == boost,
+               "the DCEL has " << ours.size() << " boundary cycles, Boost's traversal " << boost.size() << "; they differ");
     std::vector<props::VertexCycle> queried;
     for (const std::vector<VertexId>& c : boundary_cycles(d)) {
         props::VertexCycle ids;
@@ -130,7 +130,8 @@ void check_areas(const Dcel& d) {
         const FaceId f(i);
         if (d.is_unbounded(f)) continue;
         props::Rational twice = props::twice_area(props::cycle_points(d, d.outer(f)));
-        FUZZ_CHECK(sign_of(cycle_area(d, d.outer(f)).sign) == sign_of(twice), "cycle_area sign of f" << i << "'s outer cycle");
+        FUZZ_CHECK(sign_of(cycle_area(d, d.outer(f)).sign) == sign_of(twice),
+                   "cycle_area sign of f" << i << "'s outer cycle");
         for (const HalfEdgeId h : d.inner(f)) {
             const props::Rational hole = props::twice_area(props::cycle_points(d, h));
             FUZZ_CHECK(sign_of(cycle_area(d, h).sign) == sign_of(hole), "cycle_area sign of a hole of f" << i);
@@ -138,11 +139,11 @@ void check_areas(const Dcel& d) {
         }
         const props::Rational exact = twice / 2;
         const Area got = face_area(d, f);
-        FUZZ_CHECK(exact > 0 && got.sign == Sign::Positive, "f" << i << " has area of sign " << sign_of(exact)
-                                                                 << ", face_area says " << sign_of(got.sign));
-        FUZZ_CHECK(props::is_nearest_double(got.value, exact),
-                   "face_area(f" << i << ") = " << got.value << " is not the exact area " << exact.str()
-                                 << " rounded to the nearest double");
+        FUZZ_CHECK(exact > 0 && got.sign == Sign::Positive,
+                   "f" << i << " has area of sign " << sign_of(exact) << ", face_area says " << sign_of(got.sign));
+        FUZZ_CHECK(props::is_nearest_double(got.value, exact), "face_area(f" << i << ") = " << got.value
+                                                                             << " is not the exact area " << exact.str()
+                                                                             << " rounded to the nearest double");
     }
 }
 

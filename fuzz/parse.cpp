@@ -60,8 +60,8 @@ void check_clean(const InvalidInput& e, bool from_reader) {
 void check_validators_agree(const DcelDump& d) {
     const CheckResult first = validate(d);
     const std::vector<Violation> all = validate_all(d);
-    FUZZ_CHECK(first.has_value() == !all.empty(), "validate " << (first ? first->message : "passes")
-                                                              << " but validate_all found " << all.size());
+    FUZZ_CHECK(first.has_value() == !all.empty(),
+               "validate " << (first ? first->message : "passes") << " but validate_all found " << all.size());
     if (first) {
         FUZZ_CHECK(first->message.find('\n') == std::string::npos, "multi-line violation: " << first->message);
         FUZZ_CHECK(all.front().invariant == first->invariant, "validate and validate_all disagree on the first");

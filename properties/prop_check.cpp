@@ -31,7 +31,8 @@ RC_GTEST_PROP(Check, prop_check_renumbered_dump_agrees, ()) {
 RC_GTEST_PROP(Check, prop_check_shuffled_faces_agree, ()) {
     const GraphCase c = *graphs();
     const Dcel d = build(c.graph);
-    const check::Report r = check::compare_faces(d, testing::shuffled(faces_answer(d), *rc::gen::arbitrary<std::uint64_t>()));
+    const check::Report r = check::compare_faces(d,
+                                                 testing::shuffled(faces_answer(d), *rc::gen::arbitrary<std::uint64_t>()));
     RC_ASSERT(r.agrees());
 }
 

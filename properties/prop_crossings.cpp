@@ -87,16 +87,22 @@ rc::Gen<RawGraph> raw_graphs() {
     return rc::gen::mapcat(rc::gen::pair(rc::gen::inRange(2, 7), rc::gen::inRange(2, 14)), [](std::pair<int, int> sn) {
         const auto [side, n] = sn;
         const auto coordinate = rc::gen::map(rc::gen::inRange(0, side), [](int v) { return static_cast<double>(v); });
-        const auto points = rc::gen::container<std::vector<Point>>(
-            static_cast<std::size_t>(n), rc::gen::apply([](double x, double y) { return Point{x, y}; }, coordinate, coordinate));
-        const auto edge = rc::gen::map(rc::gen::suchThat(rc::gen::pair(rc::gen::inRange(0, n), rc::gen::inRange(0, n)),
-                                                         [](std::pair<int, int> e) { return e.first != e.second; }),
-                                       [](std::pair<int, int> e) {
-                                           return GraphEdge{VertexId(static_cast<Index>(e.first)),
-                                                            VertexId(static_cast<Index>(e.second))};
-                                       });
-        return rc::gen::apply([](std::vector<Point> p, std::vector<GraphEdge> e) { return RawGraph{{std::move(p), std::move(e)}}; },
-                              points, rc::gen::resize(n, rc::gen::container<std::vector<GraphEdge>>(edge)));
+        const auto points = rc::gen::container<std::vector<Point>>(static_cast<std::size_t>(n), rc::gen::apply(
+                                                                                                    [](double x, double y) {
+                                                                                                        return Point{x, y};
+                                                                                                    },
+                                                                                                    coordinate, coordinate));
+        const auto edge = rc::gen::map(
+            rc::gen::suchThat(rc::gen::pair(rc::gen::inRange(0, n), rc::gen::inRange(0, n)),
+                              [](std::pair<int, int> e) { return e.first != e.second; }),
+            [](std::pair<int, int> e) {
+                return GraphEdge{VertexId(static_cast<Index>(e.first)), VertexId(static_cast<Index>(e.second))};
+            });
+        return rc::gen::apply(
+            [](std::vector<Point> p, std::vector<GraphEdge> e) {
+                return RawGraph{{std::move(p), std::move(e)}};
+            },
+            points, rc::gen::resize(n, rc::gen::container<std::vector<GraphEdge>>(edge)));
     });
 }
 

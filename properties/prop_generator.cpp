@@ -41,7 +41,8 @@ RC_GTEST_PROP(Generator, prop_shrink_candidates_are_valid_and_smaller, ()) {
         RC_ASSERT(fractional_coordinates(s) == fractional_coordinates(g));
         bool shrank = false;
         for (std::size_t v = 0; v < g.vertices.size(); ++v) {
-            for (const auto& [before, after] : {std::pair{g.vertices[v].x, s.vertices[v].x}, std::pair{g.vertices[v].y, s.vertices[v].y}}) {
+            for (const auto& [before, after] :
+                 {std::pair{g.vertices[v].x, s.vertices[v].x}, std::pair{g.vertices[v].y, s.vertices[v].y}}) {
                 RC_ASSERT(std::fabs(after) <= std::fabs(before));
                 shrank = shrank || std::fabs(after) < std::fabs(before);
             }
@@ -61,8 +62,9 @@ RC_GTEST_PROP(Generator, prop_transforms_are_exact_or_refused, ()) {
                                      gen::Transform::ScalePow2);
     const std::int64_t amount = t == gen::Transform::ScalePow2
                                     ? *rc::gen::inRange<std::int64_t>(-1100, 1101)
-                                    : *rc::gen::oneOf(rc::gen::inRange<std::int64_t>(-1024, 1025),
-                                                      rc::gen::inRange<std::int64_t>(-(std::int64_t{1} << 56), std::int64_t{1} << 56));
+                                    : *rc::gen::oneOf(
+                                          rc::gen::inRange<std::int64_t>(-1024, 1025),
+                                          rc::gen::inRange<std::int64_t>(-(std::int64_t{1} << 56), std::int64_t{1} << 56));
     const std::optional<PlanarGraph> out = gen::apply(c.graph, t, amount);
     // The exact image of each coordinate, and whether a double holds it.
     bool representable = t != gen::Transform::Translate || std::llabs(amount) <= (std::int64_t{1} << 53);

@@ -84,8 +84,7 @@ RC_GTEST_PROP(Invariance, prop_mirroring_reverses_every_cycle, ()) {
     const std::vector<Index> same = identity(c.graph.vertices.size());
     const std::optional<PlanarGraph> mirrored = gen::apply(c.graph, gen::Transform::Mirror);
     RC_ASSERT(mirrored.has_value());
-    RC_ASSERT(face_shapes_renamed(build(*mirrored), same, /*reverse=*/true) ==
-              face_shapes_renamed(build(c.graph), same));
+    RC_ASSERT(face_shapes_renamed(build(*mirrored), same, /*reverse=*/true) == face_shapes_renamed(build(c.graph), same));
 }
 
 }  // namespace

@@ -30,12 +30,25 @@ RC_GTEST_PROP(Validate, prop_accepts_every_built_dcel, ()) {
 //    listed twice, or its outer cycle replaced by another cycle's half-edge;
 //  - an isolated vertex dropped from its face, or moved to another face
 //    (then it lies in a face that does not contain it).
-enum class Corruption { Next, Prev, Twin, Face, Origin, VertexOut, DropInner, MoveInner, RepeatCycle, ReplaceOuter,
-                        DropIsolated, MoveIsolated };
+enum class Corruption {
+    Next,
+    Prev,
+    Twin,
+    Face,
+    Origin,
+    VertexOut,
+    DropInner,
+    MoveInner,
+    RepeatCycle,
+    ReplaceOuter,
+    DropIsolated,
+    MoveIsolated
+};
 
 std::string name(Corruption c) {
-    static const char* const kNames[] = {"next", "prev", "twin", "face", "origin", "vertex-out", "drop-inner",
-                                         "move-inner", "repeat-cycle", "replace-outer", "drop-isolated", "move-isolated"};
+    static const char* const kNames[] = {"next",         "prev",          "twin",          "face",
+                                         "origin",       "vertex-out",    "drop-inner",    "move-inner",
+                                         "repeat-cycle", "replace-outer", "drop-isolated", "move-isolated"};
     return kNames[static_cast<int>(c)];
 }
 

@@ -18,8 +18,9 @@ namespace dcel::gen {
 namespace {
 
 PlanarGraph square() {
-    return {{{0, 0}, {4, 0}, {4, 4}, {0, 4}},
-            {{VertexId(0), VertexId(1)}, {VertexId(1), VertexId(2)}, {VertexId(2), VertexId(3)}, {VertexId(3), VertexId(0)}}};
+    return {
+        {{0, 0}, {4, 0}, {4, 4}, {0, 4}},
+        {{VertexId(0), VertexId(1)}, {VertexId(1), VertexId(2)}, {VertexId(2), VertexId(3)}, {VertexId(3), VertexId(0)}}};
 }
 
 TEST(Generate, EveryFamilyIsValidAtEverySize) {
@@ -56,7 +57,8 @@ TEST(Generate, FamiliesReachWhatTheyPromise) {
         for (const GraphEdge& e : star.edges) ++degree[e.u.index()], ++degree[e.v.index()];
         for (const std::size_t d : degree) max_star_degree = std::max(max_star_degree, d);
 
-        max_components = std::max(max_components, props::count_components_by_union_find(generate({Family::Components, seed, 100})));
+        max_components = std::max(max_components,
+                                  props::count_components_by_union_find(generate({Family::Components, seed, 100})));
 
         const Dcel nested = build(generate({Family::NestedPolygons, seed, 100}));
         for (Index f = 1; f < nested.num_faces(); ++f) {
@@ -128,11 +130,17 @@ TEST(Plant, OverlapStaysOnTheLineWithNearDegenerateCoordinates) {
     // Regression (found by Crossings.prop_planted_defect_...): here the point
     // past the end of edge 1 rounds off its line, so the attempt made a touch
     // (vertex-on-edge) where an overlap was asked for.
-    const PlanarGraph g{{{1.2791052533825409e+29, 6897321058801102}, {1.2791052533825414e+29, 0},
-                         {1.279105253382541e+29, 6897321058801113}, {1.2791052533825404e+29, 6897321058801111},
-                         {1.2791052533825407e+29, 6897321058801112}, {1.2791052533825398e+29, 6897321058801120}},
-                        {{VertexId(5), VertexId(3)}, {VertexId(0), VertexId(3)}, {VertexId(4), VertexId(3)},
-                         {VertexId(4), VertexId(2)}, {VertexId(2), VertexId(1)}}};
+    const PlanarGraph g{{{1.2791052533825409e+29, 6897321058801102},
+                         {1.2791052533825414e+29, 0},
+                         {1.279105253382541e+29, 6897321058801113},
+                         {1.2791052533825404e+29, 6897321058801111},
+                         {1.2791052533825407e+29, 6897321058801112},
+                         {1.2791052533825398e+29, 6897321058801120}},
+                        {{VertexId(5), VertexId(3)},
+                         {VertexId(0), VertexId(3)},
+                         {VertexId(4), VertexId(3)},
+                         {VertexId(4), VertexId(2)},
+                         {VertexId(2), VertexId(1)}}};
     const std::optional<PlanarGraph> bad = plant(g, Defect::Overlap, 401);
     ASSERT_TRUE(bad.has_value());
     try {

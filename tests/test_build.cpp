@@ -17,8 +17,8 @@
 namespace dcel {
 namespace {
 
-using testing::FaceShape;
 using testing::face_shapes;
+using testing::FaceShape;
 using testing::sorted_shapes;
 
 PlanarGraph graph(std::vector<Point> points, std::vector<std::pair<Index, Index>> edges) {
@@ -70,9 +70,7 @@ void expect_faces(const PlanarGraph& g, std::vector<FaceShape> expected) {
 
 TEST(Build, EmptyGraphHasOnlyTheUnboundedFace) { expect_faces(graph({}, {}), {{{}, {}, {}}}); }
 
-TEST(Build, IsolatedVertices) {
-    expect_faces(graph({{0, 0}, {1, 5}}, {}), {{{}, {}, {0, 1}}});
-}
+TEST(Build, IsolatedVertices) { expect_faces(graph({{0, 0}, {1, 5}}, {}), {{{}, {}, {0, 1}}}); }
 
 // Regression (found by fuzz/nonplanar under UBSan): sorting the rings formed
 // first + 1 on an empty ring, undefined behaviour when the graph has no edges
@@ -90,8 +88,7 @@ TEST(Build, LoneEdgeIsOneTwoCycle) {
 }
 
 TEST(Build, Triangle) {
-    expect_faces(graph({{0, 0}, {1, 0}, {0, 1}}, {{0, 1}, {1, 2}, {2, 0}}),
-                 {{{}, {{0, 2, 1}}, {}}, {{0, 1, 2}, {}, {}}});
+    expect_faces(graph({{0, 0}, {1, 0}, {0, 1}}, {{0, 1}, {1, 2}, {2, 0}}), {{{}, {{0, 2, 1}}, {}}, {{0, 1, 2}, {}, {}}});
 }
 
 TEST(Build, SquareWithDiagonal) {
@@ -109,16 +106,14 @@ TEST(Build, StarIsOneTourVisitingTheCentreBetweenLeaves) {
 TEST(Build, BowtieOuterBoundaryPassesTheSharedVertexTwice) {
     // Right triangle 0,1,2 and left triangle 0,3,4 share vertex 0. The outer
     // walk: 0->2->1->0, then clockwise at 0 from east-south to the left: 0->4->3->0.
-    expect_faces(graph({{0, 0}, {2, -1}, {2, 1}, {-2, 1}, {-2, -1}},
-                       {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {3, 4}, {4, 0}}),
+    expect_faces(graph({{0, 0}, {2, -1}, {2, 1}, {-2, 1}, {-2, -1}}, {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {3, 4}, {4, 0}}),
                  {{{}, {{0, 2, 1, 0, 4, 3}}, {}}, {{0, 1, 2}, {}, {}}, {{0, 3, 4}, {}, {}}});
 }
 
 TEST(Build, DanglingTreeInsideAFace) {
     // At 0, arriving from 3 (north), clockwise next is 0->4 (north-east); the
     // tree 0-4-5 is walked out and back before 0->1.
-    expect_faces(graph({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {2, 1}},
-                       {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {4, 5}}),
+    expect_faces(graph({{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {2, 1}}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {4, 5}}),
                  {{{}, {{0, 3, 2, 1}}, {}}, {{0, 1, 2, 3, 0, 4, 5, 4}, {}, {}}});
 }
 
@@ -141,12 +136,10 @@ TEST(Build, HolesAndIsolatedVerticesLandInTheirFaces) {
     // above A, isolated 10; isolated 12 outside. Below B's leftmost vertex is
     // A's top edge, whose upper side is A's outer boundary, so B goes where A
     // goes: into the square.
-    expect_faces(graph({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {5, 2}, {5, 4}, {2, 4}, {3, 6}, {4, 7}, {1, 1},
-                        {3, 3}, {20, 20}},
-                       {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {8, 9}}),
-                 {{{}, {{0, 3, 2, 1}}, {12}},
-                  {{0, 1, 2, 3}, {{4, 7, 6, 5}, {8, 9}}, {10}},
-                  {{4, 5, 6, 7}, {}, {11}}});
+    expect_faces(
+        graph({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {5, 2}, {5, 4}, {2, 4}, {3, 6}, {4, 7}, {1, 1}, {3, 3}, {20, 20}},
+              {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {8, 9}}),
+        {{{}, {{0, 3, 2, 1}}, {12}}, {{0, 1, 2, 3}, {{4, 7, 6, 5}, {8, 9}}, {10}}, {{4, 5, 6, 7}, {}, {11}}});
 }
 
 TEST(Build, RayFromHoleHitsAVertexOfAnotherHole) {
@@ -204,7 +197,7 @@ TEST(Build, HalfEdgeLayoutFollowsInputEdges) {
     EXPECT_EQ(d.origin(HalfEdgeId(5)), VertexId(0));  // edge 2 reversed: 0->2
     EXPECT_EQ(d.next(HalfEdgeId(0)), HalfEdgeId(2));  // 0->1 then 1->2
     EXPECT_EQ(d.prev(HalfEdgeId(2)), HalfEdgeId(0));
-    EXPECT_EQ(d.out(VertexId(0)), HalfEdgeId(0));     // the smallest outgoing id
+    EXPECT_EQ(d.out(VertexId(0)), HalfEdgeId(0));  // the smallest outgoing id
     EXPECT_EQ(d.out(VertexId(2)), HalfEdgeId(3));
 }
 
@@ -245,8 +238,8 @@ TEST(Build, NegativeZeroIsZero) {
 
 // ---- Invalid input: kind, ids, and the message names them
 
-void expect_invalid(const PlanarGraph& g, InputErrorKind kind, const std::string& text,
-                    std::vector<Index> vertices, std::vector<Index> edges) {
+void expect_invalid(const PlanarGraph& g, InputErrorKind kind, const std::string& text, std::vector<Index> vertices,
+                    std::vector<Index> edges) {
     try {
         (void)build(g);
         FAIL() << "accepted; expected " << to_string(kind);
@@ -273,8 +266,8 @@ TEST(BuildRejects, IndexOutOfRange) {
 }
 
 TEST(BuildRejects, SelfLoop) {
-    expect_invalid(graph({{0, 0}, {1, 0}}, {{0, 1}, {1, 1}}), InputErrorKind::SelfLoop, "edge 1 [1, 1] is a self-loop",
-                   {1}, {1});
+    expect_invalid(graph({{0, 0}, {1, 0}}, {{0, 1}, {1, 1}}), InputErrorKind::SelfLoop, "edge 1 [1, 1] is a self-loop", {1},
+                   {1});
 }
 
 TEST(BuildRejects, DuplicatePointsIncludingSignedZero) {

@@ -121,7 +121,8 @@ bool oracle_before(Point c, const RingEntry& a, const RingEntry& b) {
 
 void expect_ring_sorted(Point c, std::vector<RingEntry> ring) {
     std::vector<RingEntry> expected = ring;
-    std::sort(expected.begin(), expected.end(), [&](const RingEntry& a, const RingEntry& b) { return oracle_before(c, a, b); });
+    std::sort(expected.begin(), expected.end(),
+              [&](const RingEntry& a, const RingEntry& b) { return oracle_before(c, a, b); });
     const std::size_t reported = sort_ring(c, ring);
     ASSERT_EQ(ring.size(), expected.size());
     for (std::size_t i = 0; i < ring.size(); ++i) EXPECT_EQ(ring[i].half_edge, expected[i].half_edge) << i;
@@ -199,10 +200,17 @@ TEST(RingSort, RingsOfTwoInEveryArrangement) {
     // directions, and pairs ~1e-31 rad apart, from nasty centres too.
     std::mt19937_64 rng(12);
     const double o = 1e15;
-    const std::vector<std::pair<Point, Point>> fixed = {
-        {{1, 0}, {0, 1}},         {{1, 1}, {2, 2}},         {{-1, -1}, {-3, -3}},    {{1, 0}, {-1, 0}},
-        {{0, 1}, {0, -1}},        {{o, o + 1}, {o + 1, o + 2}}, {{-o, -o - 1}, {-o - 1, -o - 2}},
-        {{1, -1}, {2, -1}},       {{0, -1}, {0, -2}},       {{-1, 0}, {-2, 0}},      {{2, 1}, {1, 2}}};
+    const std::vector<std::pair<Point, Point>> fixed = {{{1, 0}, {0, 1}},
+                                                        {{1, 1}, {2, 2}},
+                                                        {{-1, -1}, {-3, -3}},
+                                                        {{1, 0}, {-1, 0}},
+                                                        {{0, 1}, {0, -1}},
+                                                        {{o, o + 1}, {o + 1, o + 2}},
+                                                        {{-o, -o - 1}, {-o - 1, -o - 2}},
+                                                        {{1, -1}, {2, -1}},
+                                                        {{0, -1}, {0, -2}},
+                                                        {{-1, 0}, {-2, 0}},
+                                                        {{2, 1}, {1, 2}}};
     for (const auto& [a, b] : fixed) {
         for (const bool swap_ids : {false, true}) {
             const HalfEdgeId ia(swap_ids ? 1 : 0);

@@ -28,7 +28,9 @@ using testing::FaceShape;
 using testing::sorted_shapes;
 
 Point at(const PlanarGraph& g, Index v) { return g.vertices[v]; }
-Index origin_of(const PlanarGraph& g, Index h) { return (h & 1U) == 0 ? g.edges[h / 2].u.index() : g.edges[h / 2].v.index(); }
+Index origin_of(const PlanarGraph& g, Index h) {
+    return (h & 1U) == 0 ? g.edges[h / 2].u.index() : g.edges[h / 2].v.index();
+}
 Index target_of(const PlanarGraph& g, Index h) { return origin_of(g, h ^ 1U); }
 
 // next(u->v): of the half-edges leaving v, the first one met turning

@@ -25,10 +25,24 @@ using check::Report;
 // of West; isolated 9 in West, 10 in East, 11 outside; a dangling edge 3-12
 // into East; a path 13-14-15 outside (a tree: its one cycle repeats 14).
 PlanarGraph rich() {
-    return graph({{0, 0}, {10, 0}, {20, 0}, {20, 10}, {10, 10}, {0, 10}, {2, 2}, {5, 2}, {2, 5}, {7, 7},
-                  {15, 5}, {30, 30}, {18, 8}, {40, 0}, {41, 0}, {41, 1}},
-                 {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 0}, {1, 4}, {6, 7}, {7, 8}, {8, 6}, {3, 12},
-                  {13, 14}, {14, 15}});
+    return graph(
+        {{0, 0},
+         {10, 0},
+         {20, 0},
+         {20, 10},
+         {10, 10},
+         {0, 10},
+         {2, 2},
+         {5, 2},
+         {2, 5},
+         {7, 7},
+         {15, 5},
+         {30, 30},
+         {18, 8},
+         {40, 0},
+         {41, 0},
+         {41, 1}},
+        {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 0}, {1, 4}, {6, 7}, {7, 8}, {8, 6}, {3, 12}, {13, 14}, {14, 15}});
 }
 
 // Prints the report, so a failing expectation shows what was said.
@@ -369,11 +383,12 @@ TEST(CheckDump, WrongIsolatedVertex) {
     ASSERT_EQ(count_kind(r, DifferenceKind::WrongIsolatedVertex), 1U);
     ASSERT_NE(find_kind(r, DifferenceKind::WrongIsolatedVertex), nullptr);
     EXPECT_EQ(find_kind(r, DifferenceKind::WrongIsolatedVertex)->vertices, (std::vector<Index>{9}));
-    EXPECT_NE(find_kind(r, DifferenceKind::WrongIsolatedVertex)->message.find("isolated vertex v9 lies in the face bounded by [0, 1, 4, 5]"),
+    EXPECT_NE(find_kind(r, DifferenceKind::WrongIsolatedVertex)
+                  ->message.find("isolated vertex v9 lies in the face bounded by [0, 1, 4, 5]"),
               std::string::npos);
 
     a = rich_dump();
-    a.faces[0].isolated.clear();  // v11 in no face
+    a.faces[0].isolated.clear();                 // v11 in no face
     a.faces[0].isolated.push_back(VertexId(0));  // and v0, which has edges, listed
     r = show(compare_dump(d, a));
     EXPECT_EQ(count_kind(r, DifferenceKind::WrongIsolatedVertex), 2U);
@@ -413,8 +428,8 @@ TEST(CheckReport, TextAndJson) {
               "1 difference\nmissing-cycle: the reference cycle [" + cycle + "] is missing from the answer\n");
     EXPECT_EQ(check::report_json(r),
               "{\"agrees\": false, \"count\": 1, \"unlisted\": 0, \"differences\": [\n"
-              "  {\"kind\": \"missing-cycle\", \"message\": \"the reference cycle [" + cycle +
-                  "] is missing from the answer\", \"vertices\": [" + cycle + "]}\n]}\n");
+              "  {\"kind\": \"missing-cycle\", \"message\": \"the reference cycle [" +
+                  cycle + "] is missing from the answer\", \"vertices\": [" + cycle + "]}\n]}\n");
     for (const auto k : {DifferenceKind::VertexCount, DifferenceKind::WrongIsolatedVertex, DifferenceKind::WrongPoint}) {
         EXPECT_NE(check::kind_name(k), "unknown");
     }

@@ -14,8 +14,8 @@
 
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
-#include "dcel/queries.hpp"
 #include "dcel/io/dcel_json.hpp"
+#include "dcel/queries.hpp"
 
 namespace dcel::io {
 namespace {
@@ -123,9 +123,7 @@ std::string dump_with_face(std::string_view face) {
 
 TEST(WriteDump, LinesStyleExactText) { EXPECT_EQ(write_dump(segment_dump()), kSegmentLines); }
 
-TEST(WriteDump, CompactStyleExactText) {
-    EXPECT_EQ(write_dump(segment_dump(), DumpStyle::Compact), kSegmentCompact);
-}
+TEST(WriteDump, CompactStyleExactText) { EXPECT_EQ(write_dump(segment_dump(), DumpStyle::Compact), kSegmentCompact); }
 
 TEST(WriteDump, EmptyDump) {
     EXPECT_EQ(write_dump(DcelDump{}),
@@ -173,7 +171,8 @@ TEST(ReadDump, RoundTripsSpecialNumbersAndLargeIds) {
     d.vertices = {{-0.0, 5e-324}, {std::numeric_limits<double>::max(), 0.1}, {-1e-300, 1.0 / 3.0}};
     d.vertex_out = {HalfEdgeId(4294967294U), HalfEdgeId(), HalfEdgeId(7)};
     d.half_edges = {he(4294967294U, 1, 2, 3, 4294967294U), he(0, 0, 0, 0, 0)};
-    d.faces = {{HalfEdgeId(), {}, {}}, {HalfEdgeId(9), {HalfEdgeId(1), HalfEdgeId(2)}, {VertexId(0), VertexId(4294967294U)}}};
+    d.faces = {{HalfEdgeId(), {}, {}},
+               {HalfEdgeId(9), {HalfEdgeId(1), HalfEdgeId(2)}, {VertexId(0), VertexId(4294967294U)}}};
     for (const DumpStyle style : {DumpStyle::Lines, DumpStyle::Compact}) {
         const std::string text = write_dump(d, style);
         expect_same_dump(read_dump(text), d);
@@ -231,8 +230,9 @@ TEST(ReadDump, IdsAreNotRangeChecked) {
 
 TEST(ReadDumpErrors, TopLevel) {
     expect_dump_error("[]", InputErrorKind::Shape, R"(top level: expected a DCEL dump {"vertices": [[x, y], ...], )");
-    expect_dump_error(R"({"vertices": [], "faces": []})", InputErrorKind::Shape,
-                      R"(missing key "half_edges": expected {"vertices": [[x, y], ...], "vertex_out": [h or null, ...], "half_edges": [{"origin": v, )");
+    expect_dump_error(
+        R"({"vertices": [], "faces": []})", InputErrorKind::Shape,
+        R"(missing key "half_edges": expected {"vertices": [[x, y], ...], "vertex_out": [h or null, ...], "half_edges": [{"origin": v, )");
     expect_dump_error(R"({"half_edges": [], "faces": []})", InputErrorKind::Shape, R"(missing key "vertices")");
     expect_dump_error(R"({"vertices": [], "half_edges": []})", InputErrorKind::Shape, R"(missing key "faces")");
     expect_dump_error(R"({"vertices": [], "half_edges": [], "faces": [], "faces": []})", InputErrorKind::Shape,
@@ -245,11 +245,12 @@ TEST(ReadDumpErrors, TopLevel) {
 TEST(ReadDumpErrors, HalfEdges) {
     expect_dump_error(dump_with_half_edges(7, R"({"origin": 0, "twin": 0, "next": -1, "prev": 0, "face": 0})"),
                       InputErrorKind::BadIndex, "half_edges[7].next: half-edge id -1 is negative");
-    expect_dump_error(dump_with_half_edges(1, R"({"origin": 0, "twin": 0, "prev": 0, "face": 0})"),
-                      InputErrorKind::Shape,
-                      R"(half_edges[1]: missing key "next": expected {"origin": v, "twin": h, "next": h, "prev": h, "face": f})");
+    expect_dump_error(
+        dump_with_half_edges(1, R"({"origin": 0, "twin": 0, "prev": 0, "face": 0})"), InputErrorKind::Shape,
+        R"(half_edges[1]: missing key "next": expected {"origin": v, "twin": h, "next": h, "prev": h, "face": f})");
     expect_dump_error(dump_with_half_edges(0, R"({"origin": 0, "twin": 0, "twin": 1, "next": 0, "prev": 0, "face": 0})"),
-                      InputErrorKind::Shape, R"(half_edges[0]: duplicate key "twin" at line 1, column 58: give each key once)");
+                      InputErrorKind::Shape,
+                      R"(half_edges[0]: duplicate key "twin" at line 1, column 58: give each key once)");
     expect_dump_error(dump_with_half_edges(2, R"({"origin": 0.5, "twin": 0, "next": 0, "prev": 0, "face": 0})"),
                       InputErrorKind::BadIndex, "half_edges[2].origin: vertex id 0.5 is not an integer");
     expect_dump_error(dump_with_half_edges(0, R"({"origin": 0, "twin": 0, "next": 0, "prev": 0, "face": 4294967295})"),
@@ -258,9 +259,11 @@ TEST(ReadDumpErrors, HalfEdges) {
                       InputErrorKind::Shape,
                       "half_edges[0].twin: expected a half-edge id (a non-negative integer), found null");
     expect_dump_error(dump_with_half_edges(0, R"({"origin": "0", "twin": 0, "next": 0, "prev": 0, "face": 0})"),
-                      InputErrorKind::Shape, "half_edges[0].origin: expected a vertex id (a non-negative integer), found a string");
-    expect_dump_error(dump_with_half_edges(0, "[0, 1, 2, 3, 4]"), InputErrorKind::Shape,
-                      R"(half_edges[0]: expected a half-edge {"origin": v, "twin": h, "next": h, "prev": h, "face": f}, found an array)");
+                      InputErrorKind::Shape,
+                      "half_edges[0].origin: expected a vertex id (a non-negative integer), found a string");
+    expect_dump_error(
+        dump_with_half_edges(0, "[0, 1, 2, 3, 4]"), InputErrorKind::Shape,
+        R"(half_edges[0]: expected a half-edge {"origin": v, "twin": h, "next": h, "prev": h, "face": f}, found an array)");
     expect_dump_error(R"({"vertices": [], "half_edges": {}, "faces": []})", InputErrorKind::Shape,
                       "half_edges: expected an array of half-edges");
 }
@@ -270,8 +273,8 @@ TEST(ReadDumpErrors, VerticesAndVertexOut) {
                       "vertices[1]: expected a point [x, y], found an array of 1 element");
     expect_dump_error(R"({"vertices": [[0, -1e999]], "half_edges": [], "faces": []})", InputErrorKind::BadCoordinate,
                       "vertices[0][1]: -1e999 is beyond the range of a double");
-    expect_dump_error(R"({"vertices": [], "vertex_out": [0, 1.5], "half_edges": [], "faces": []})",
-                      InputErrorKind::BadIndex, "vertex_out[1]: half-edge id 1.5 is not an integer");
+    expect_dump_error(R"({"vertices": [], "vertex_out": [0, 1.5], "half_edges": [], "faces": []})", InputErrorKind::BadIndex,
+                      "vertex_out[1]: half-edge id 1.5 is not an integer");
     expect_dump_error(R"({"vertices": [], "vertex_out": [true], "half_edges": [], "faces": []})", InputErrorKind::Shape,
                       "vertex_out[0]: expected a half-edge id (a non-negative integer) or null, found true");
     expect_dump_error(R"({"vertices": [], "vertex_out": null, "half_edges": [], "faces": []})", InputErrorKind::Shape,
@@ -279,8 +282,9 @@ TEST(ReadDumpErrors, VerticesAndVertexOut) {
 }
 
 TEST(ReadDumpErrors, Faces) {
-    expect_dump_error(dump_with_face(R"({"inner": [0]})"), InputErrorKind::Shape,
-                      R"(faces[1]: missing key "outer": expected {"outer": h or null, "inner": [h, ...], "isolated": [v, ...]})");
+    expect_dump_error(
+        dump_with_face(R"({"inner": [0]})"), InputErrorKind::Shape,
+        R"(faces[1]: missing key "outer": expected {"outer": h or null, "inner": [h, ...], "isolated": [v, ...]})");
     expect_dump_error(dump_with_face(R"({"outer": "x"})"), InputErrorKind::Shape,
                       "faces[1].outer: expected a half-edge id (a non-negative integer) or null, found a string");
     expect_dump_error(dump_with_face(R"({"outer": -2})"), InputErrorKind::BadIndex,
@@ -295,8 +299,9 @@ TEST(ReadDumpErrors, Faces) {
                       "faces[1].isolated: expected an array of vertex ids [v, ...], found a number");
     expect_dump_error(dump_with_face(R"({"outer": 1, "outer": 2})"), InputErrorKind::Shape,
                       R"(faces[1]: duplicate key "outer")");
-    expect_dump_error(dump_with_face("[1]"), InputErrorKind::Shape,
-                      R"(faces[1]: expected a face {"outer": h or null, "inner": [h, ...], "isolated": [v, ...]}, found an array)");
+    expect_dump_error(
+        dump_with_face("[1]"), InputErrorKind::Shape,
+        R"(faces[1]: expected a face {"outer": h or null, "inner": [h, ...], "isolated": [v, ...]}, found an array)");
 }
 
 TEST(ReadDumpErrors, TooLarge) {
@@ -305,15 +310,21 @@ TEST(ReadDumpErrors, TooLarge) {
     limits.half_edges = 1;
     limits.faces = 1;
     const auto read = [&](std::string_view text) { return detail::read_dump(text, limits); };
-    EXPECT_NO_THROW(static_cast<void>(read(dump_with_half_edges(0, R"({"origin": 0, "twin": 0, "next": 0, "prev": 0, "face": 0})"))));
-    expect_input_error([&] { static_cast<void>(read(dump_with_half_edges(1, R"({"origin": 0, "twin": 0, "next": 0, "prev": 0, "face": 0})"))); },
-                       InputErrorKind::TooLarge, "half_edges[1]: more than 1 half-edges: ids are 32-bit");
+    EXPECT_NO_THROW(
+        static_cast<void>(read(dump_with_half_edges(0, R"({"origin": 0, "twin": 0, "next": 0, "prev": 0, "face": 0})"))));
+    expect_input_error(
+        [&] {
+            static_cast<void>(read(dump_with_half_edges(1, R"({"origin": 0, "twin": 0, "next": 0, "prev": 0, "face": 0})")));
+        },
+        InputErrorKind::TooLarge, "half_edges[1]: more than 1 half-edges: ids are 32-bit");
     expect_input_error([&] { static_cast<void>(read(R"({"vertices": [[0, 0], [1, 1]], "half_edges": [], "faces": []})")); },
                        InputErrorKind::TooLarge, "vertices[1]: more than 1 vertices");
-    expect_input_error([&] { static_cast<void>(read(R"({"vertices": [], "vertex_out": [0, 1], "half_edges": [], "faces": []})")); },
-                       InputErrorKind::TooLarge, "vertex_out[1]: more than 1 vertices");
-    expect_input_error([&] { static_cast<void>(read(R"({"vertices": [], "half_edges": [], "faces": [{"outer": null}, {"outer": 0}]})")); },
-                       InputErrorKind::TooLarge, "faces[1]: more than 1 faces");
+    expect_input_error(
+        [&] { static_cast<void>(read(R"({"vertices": [], "vertex_out": [0, 1], "half_edges": [], "faces": []})")); },
+        InputErrorKind::TooLarge, "vertex_out[1]: more than 1 vertices");
+    expect_input_error(
+        [&] { static_cast<void>(read(R"({"vertices": [], "half_edges": [], "faces": [{"outer": null}, {"outer": 0}]})")); },
+        InputErrorKind::TooLarge, "faces[1]: more than 1 faces");
     expect_input_error([&] { static_cast<void>(detail::read_faces_answer("[[], []]", limits)); }, InputErrorKind::TooLarge,
                        "[1]: more than 1 faces");
 }
@@ -345,14 +356,16 @@ TEST(ReadFacesAnswerErrors, ShapesAndIds) {
     expect_faces_error(R"({"faces": [[0, 1], [0, 1, -3]]})", InputErrorKind::BadIndex,
                        "faces[1][2]: vertex index -3 is negative");
     expect_faces_error("[[0, 1], [0.5]]", InputErrorKind::BadIndex, "[1][0]: vertex index 0.5 is not an integer");
-    expect_faces_error(R"({"cycles": []})", InputErrorKind::Shape, R"(missing key "faces": expected {"faces": [[v, ...], ...]})");
+    expect_faces_error(R"({"cycles": []})", InputErrorKind::Shape,
+                       R"(missing key "faces": expected {"faces": [[v, ...], ...]})");
     expect_faces_error(R"({"faces": [], "faces": []})", InputErrorKind::Shape, R"(duplicate key "faces")");
     expect_faces_error(R"({"faces": [0, 1, 2]})", InputErrorKind::Shape,
                        "faces[0]: expected a face cycle [v, ...], found a number");
     expect_faces_error(R"({"faces": {}})", InputErrorKind::Shape,
                        "faces: expected an array of face cycles [[v, ...], ...], found an object");
-    expect_faces_error(R"("faces")", InputErrorKind::Shape,
-                       R"(top level: expected a faces answer {"faces": [[v, ...], ...]} or [[v, ...], ...], found a string)");
+    expect_faces_error(
+        R"("faces")", InputErrorKind::Shape,
+        R"(top level: expected a faces answer {"faces": [[v, ...], ...]} or [[v, ...], ...], found a string)");
     expect_faces_error("[[0, 1]", InputErrorKind::Syntax, "line 1, column 8: unexpected end of input: expected ',' or ']'");
     expect_faces_error("[[0, 1]] []", InputErrorKind::Syntax, "line 1, column 10: unexpected content after the end");
 }

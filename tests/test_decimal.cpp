@@ -7,9 +7,9 @@
 
 #include <bit>
 #include <charconv>
+#include <clocale>
 #include <cmath>
 #include <cstdint>
-#include <clocale>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -36,28 +36,46 @@ std::string disagreement(const std::string& s) {
     if (expected.ec == actual.ec && expected.ptr == actual.ptr && same_value) return "";
     char buffer[160];
     std::snprintf(buffer, sizeof buffer, "from_chars: %a ec %d read %td; fallback: %a ec %d read %td", want,
-                  static_cast<int>(expected.ec), expected.ptr - first, got, static_cast<int>(actual.ec),
-                  actual.ptr - first);
+                  static_cast<int>(expected.ec), expected.ptr - first, got, static_cast<int>(actual.ec), actual.ptr - first);
     return "\"" + s + "\": " + buffer;
 }
 
 TEST(DecimalFallback, EdgesOfTheGrammar) {
-    for (const char* s : {"0", "-0", "1", "-1", "0.5", ".5", "-.5", "5.", "-5.", "1e5", "1E+5", "1e-5", "1e", "1e+",
-                          "1e-", "1.5e3x", "12abc", "+1", " 1", "-", ".", "-.", "", "e5", "0x1p3", "0X10", "00012",
-                          "1..2", "1.2.3", "inf", "-inf", "INF", "Infinity", "-infinity", "infin", "infx", "nan",
-                          "-nan", "NaN", "nan(123)", "nan(abc_9)", "nan(", "nan()", "nan(1 2)", "in", "na", "--1"}) {
+    for (const char* s :
+         {"0",          "-0",   "1",        "-1",        "0.5",   ".5",     "-.5",   "5.",   "-5.",   "1e5",
+          "1E+5",       "1e-5", "1e",       "1e+",       "1e-",   "1.5e3x", "12abc", "+1",   " 1",    "-",
+          ".",          "-.",   "",         "e5",        "0x1p3", "0X10",   "00012", "1..2", "1.2.3", "inf",
+          "-inf",       "INF",  "Infinity", "-infinity", "infin", "infx",   "nan",   "-nan", "NaN",   "nan(123)",
+          "nan(abc_9)", "nan(", "nan()",    "nan(1 2)",  "in",    "na",     "--1"}) {
         EXPECT_EQ(disagreement(s), "");
     }
 }
 
 TEST(DecimalFallback, SubnormalsUnderflowAndOverflow) {
-    for (const char* s : {"4.9406564584124654e-324", "5e-324", "-5e-324", "3e-324",
+    for (const char* s : {"4.9406564584124654e-324",
+                          "5e-324",
+                          "-5e-324",
+                          "3e-324",
                           "2.4703282292062328e-324",  // just above half the smallest subnormal: rounds up to it
                           "2.4703282292062327e-324",  // just below: rounds to zero, out of range
-                          "2e-324", "1e-400", "-1e-400", "0e-400", "0.000e999", "1e-310", "-1.5e-315",
-                          "2.2250738585072011e-308", "2.2250738585072014e-308", "2.2250738585072012e-308",
-                          "1.7976931348623157e308", "1.7976931348623158e308", "1.7976931348623159e308", "-1e309",
-                          "1e400", "1e99999999999999999999", "1e-99999999999999999999", "0e99999999999999999999"}) {
+                          "2e-324",
+                          "1e-400",
+                          "-1e-400",
+                          "0e-400",
+                          "0.000e999",
+                          "1e-310",
+                          "-1.5e-315",
+                          "2.2250738585072011e-308",
+                          "2.2250738585072014e-308",
+                          "2.2250738585072012e-308",
+                          "1.7976931348623157e308",
+                          "1.7976931348623158e308",
+                          "1.7976931348623159e308",
+                          "-1e309",
+                          "1e400",
+                          "1e99999999999999999999",
+                          "1e-99999999999999999999",
+                          "0e99999999999999999999"}) {
         EXPECT_EQ(disagreement(s), "");
     }
 }
@@ -69,8 +87,8 @@ TEST(DecimalFallback, KnownHardCases) {
                           "1.00000000000000011102230246251565404236316680908203125",
                           "1.00000000000000011102230246251565404236316680908203125000000000000000001",
                           "1.00000000000000011102230246251565404236316680908203124999999999999999999",
-                          "2.2250738585072011e-308", "2.225073858507201136057409796709131975934819546351645648e-308",
-                          "0.1", "0.3", "123456789012345678901234567890e-20", "7.038531e-26", "1448997445238699",
+                          "2.2250738585072011e-308", "2.225073858507201136057409796709131975934819546351645648e-308", "0.1",
+                          "0.3", "123456789012345678901234567890e-20", "7.038531e-26", "1448997445238699",
                           "8.98846567431158e307", "179769313486231580793728971405301e276",
                           "0.000000000000000000000000000000000000000000000000000000000000000000000000001e75"}) {
         EXPECT_EQ(disagreement(s), "");

@@ -81,8 +81,7 @@ TEST(AddEdge, ClosingATreeMakesTheEnclosedRegionTheNewFace) {
     // the new face takes the vertex and the segment under the V, whatever
     // side of the new edge it is on.
     for (const bool forward : {true, false}) {
-        Dcel d = build(graph({{0, 0}, {2, 2}, {4, 0}, {2, 1}, {1.5, 0.5}, {2.5, 0.5}, {9, 9}},
-                             {{0, 1}, {1, 2}, {4, 5}}));
+        Dcel d = build(graph({{0, 0}, {2, 2}, {4, 0}, {2, 1}, {1.5, 0.5}, {2.5, 0.5}, {9, 9}}, {{0, 1}, {1, 2}, {4, 5}}));
         const Change c = forward ? add_edge(d, VertexId(0), VertexId(2)) : add_edge(d, VertexId(2), VertexId(0));
         EXPECT_SOUND(d);
         EXPECT_EQ(c.faces.added, FaceId(1));
@@ -123,10 +122,8 @@ TEST(AddEdge, Refusals) {
     EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(3), VertexId(3)), TopologyError, "two different vertices");
     EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(4), VertexId(1)), TopologyError, "already joined by edge e6");
     // Both diagonals of West pass through the capital (2, 3).
-    EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(0), VertexId(4)), TopologyError,
-                             "passes through isolated vertex v10");
-    EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(5), VertexId(1)), TopologyError,
-                             "passes through isolated vertex v10");
+    EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(0), VertexId(4)), TopologyError, "passes through isolated vertex v10");
+    EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(5), VertexId(1)), TopologyError, "passes through isolated vertex v10");
     EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(1), VertexId(3)), TopologyError, "crosses edge e7");
     EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(0), VertexId(2)), TopologyError, "overlaps edge e0");
     EXPECT_REFUSED_UNCHANGED(d, add_edge(d, VertexId(5), VertexId(3)), TopologyError, "overlaps edge e3");

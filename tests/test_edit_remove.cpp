@@ -86,8 +86,8 @@ TEST(RemoveEdge, ABridgeFromTheOuterBoundaryLeavesAHoleInTheSameFace) {
 TEST(RemoveEdge, ABridgeToATreeLeavesATreeHole) {
     // The part that breaks off has zero area (a path 4-5): it must become the
     // hole, not the outer boundary.
-    Dcel d = build(graph({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 5}},
-                         {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {4, 5}}));
+    Dcel d = build(
+        graph({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 5}}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 4}, {4, 5}}));
     (void)remove_edge(d, EdgeId(4));
     EXPECT_SOUND(d);
     EXPECT_EQ(face_shapes(d), sorted_shapes({{{}, {{0, 3, 2, 1}}, {}}, {{0, 1, 2, 3}, {{4, 5}}, {}}}));
@@ -95,8 +95,8 @@ TEST(RemoveEdge, ABridgeToATreeLeavesATreeHole) {
 
 TEST(RemoveEdge, ABridgeBetweenTwoIslandsLeavesTwoHoles) {
     // Two triangles joined by the bridge 2-3 in the unbounded face.
-    Dcel d = build(graph({{0, 0}, {2, 0}, {1, 2}, {5, 2}, {4, 0}, {6, 0}},
-                         {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 4}, {4, 5}, {5, 3}}));
+    Dcel d = build(
+        graph({{0, 0}, {2, 0}, {1, 2}, {5, 2}, {4, 0}, {6, 0}}, {{0, 1}, {1, 2}, {2, 0}, {2, 3}, {3, 4}, {4, 5}, {5, 3}}));
     (void)remove_edge(d, EdgeId(3));
     EXPECT_SOUND(d);
     EXPECT_EQ(d.inner(Dcel::kUnboundedFace).size(), 2U);

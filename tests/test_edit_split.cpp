@@ -115,8 +115,7 @@ TEST(MergeCollinearEdges, MovesTheLastVertexAndEdgeIntoTheFreedIds) {
 }
 
 TEST(MergeCollinearEdges, RefusesCornersAndOtherDegrees) {
-    Dcel d = build(graph({{0, 0}, {4, 0}, {0, 4}, {9, 9}, {2, -3}, {6, 0}},
-                         {{0, 1}, {1, 2}, {2, 0}, {1, 5}}));
+    Dcel d = build(graph({{0, 0}, {4, 0}, {0, 4}, {9, 9}, {2, -3}, {6, 0}}, {{0, 1}, {1, 2}, {2, 0}, {1, 5}}));
     // v0 is a corner (degree 2, not straight); v1 has degree 3; v5 degree 1; v3 and v4 isolated.
     EXPECT_REFUSED_UNCHANGED(d, merge_collinear_edges(d, VertexId(0)), TopologyError, "not exactly on the segment");
     EXPECT_REFUSED_UNCHANGED(d, merge_collinear_edges(d, VertexId(1)), TopologyError, "has 3 edges");

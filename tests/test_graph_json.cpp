@@ -133,8 +133,9 @@ TEST(ReadGraph, DataFiles) {
 // -------------------------------------------------------------- shape errors
 
 TEST(ReadGraphErrors, TopLevelType) {
-    expect_graph_error(R"("graph")", InputErrorKind::Shape,
-                       R"(top level: expected a graph: {"vertices": [[x, y], ...], "edges": [[u, v], ...]} or [[[x, y], ...], [[u, v], ...]], found a string)");
+    expect_graph_error(
+        R"("graph")", InputErrorKind::Shape,
+        R"(top level: expected a graph: {"vertices": [[x, y], ...], "edges": [[u, v], ...]} or [[[x, y], ...], [[u, v], ...]], found a string)");
     expect_graph_error("42", InputErrorKind::Shape, "top level: expected a graph: {");
     expect_graph_error("null", InputErrorKind::Shape, "found null");
 }
@@ -198,8 +199,9 @@ TEST(ReadGraphErrors, Arity) {
                        "edges[1]: expected an edge [u, v], found an array of 3 elements");
     expect_graph_error(R"({"vertices": [], "edges": [[0]]})", InputErrorKind::Shape,
                        "edges[0]: expected an edge [u, v], found an array of 1 element");
-    expect_graph_error("[[], [], []]", InputErrorKind::Shape,
-                       "top level: expected a graph [vertices, edges]: [[[x, y], ...], [[u, v], ...]], found an array of 3 elements");
+    expect_graph_error(
+        "[[], [], []]", InputErrorKind::Shape,
+        "top level: expected a graph [vertices, edges]: [[[x, y], ...], [[u, v], ...]], found an array of 3 elements");
     expect_graph_error("[[]]", InputErrorKind::Shape, "top level: expected a graph [vertices, edges]");
     expect_graph_error("[]", InputErrorKind::Shape, "found an empty array");
     // Syntax errors in the elements being counted still come first.
@@ -290,7 +292,8 @@ TEST(ReadGraph, ShortDecimalsAgreeWithFromChars) {
         std::string s = rng() % 2 ? "-" : "";
         const int int_digits = 1 + static_cast<int>(rng() % 10);
         const int frac_digits = static_cast<int>(rng() % 12);
-        for (int i = 0; i < int_digits; ++i) s += static_cast<char>('0' + (i == 0 && int_digits > 1 ? 1 + rng() % 9 : rng() % 10));
+        for (int i = 0; i < int_digits; ++i)
+            s += static_cast<char>('0' + (i == 0 && int_digits > 1 ? 1 + rng() % 9 : rng() % 10));
         if (frac_digits > 0) {
             s += '.';
             for (int i = 0; i < frac_digits; ++i) s += static_cast<char>('0' + rng() % 10);
@@ -324,9 +327,8 @@ TEST(ReadGraphErrors, TooLarge) {
     expect_input_error(
         [&] { static_cast<void>(detail::read_graph(R"({"vertices": [[0, 0], [1, 1], [2, 2]], "edges": []})", limits)); },
         InputErrorKind::TooLarge, "vertices[2]: more than 2 vertices: vertex ids are 32-bit");
-    expect_input_error(
-        [&] { static_cast<void>(detail::read_graph("[[], [[0, 1], [1, 0]]]", limits)); }, InputErrorKind::TooLarge,
-        "[1][1]: more than 1 edges: each edge takes two 32-bit half-edge ids");
+    expect_input_error([&] { static_cast<void>(detail::read_graph("[[], [[0, 1], [1, 0]]]", limits)); },
+                       InputErrorKind::TooLarge, "[1][1]: more than 1 edges: each edge takes two 32-bit half-edge ids");
     // The defaults are what 32-bit ids can name.
     EXPECT_EQ(CountLimits{}.vertices, 4294967295U);
     EXPECT_EQ(CountLimits{}.edges, 2147483647U);
@@ -368,7 +370,8 @@ TEST(WriteGraph, NullIdIsWrittenAsNullAndRejectedOnRead) {
     g.edges = {{VertexId(), VertexId(0)}};
     const std::string text = write_graph(g);
     EXPECT_EQ(text, "{\"vertices\": [], \"edges\": [[null, 0]]}\n");
-    expect_graph_error(text, InputErrorKind::Shape, "edges[0][0]: expected a vertex index (a non-negative integer), found null");
+    expect_graph_error(text, InputErrorKind::Shape,
+                       "edges[0][0]: expected a vertex index (a non-negative integer), found null");
 }
 
 TEST(WriteGraph, NonFiniteCoordinatesAreRefused) {
@@ -429,8 +432,8 @@ TEST(WriteGraph, LargeDocument) {
         g.vertices.push_back({static_cast<double>(i), -i * 0.25});
         // -i/4 is exact; its shortest form has 0, 2 or 1 fraction digits (.0 omitted).
         const char* frac[] = {"", ".25", ".5", ".75"};
-        const int len = std::snprintf(buf, sizeof buf, "%s[%d, %s%d%s]", i == 0 ? "" : ", ", i, i == 0 ? "" : "-",
-                                      i / 4, frac[i % 4]);
+        const int len = std::snprintf(buf, sizeof buf, "%s[%d, %s%d%s]", i == 0 ? "" : ", ", i, i == 0 ? "" : "-", i / 4,
+                                      frac[i % 4]);
         expected.append(buf, static_cast<std::size_t>(len));
     }
     expected += "], \"edges\": [";

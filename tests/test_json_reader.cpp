@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <random>
 #include <string>
@@ -44,9 +44,7 @@ void expect_syntax(std::string_view text, std::string_view part) {
 
 // A graph document with one coordinate spelled `x`: {"vertices": [[x, 0]], "edges": []}.
 // The coordinate starts at column 16.
-std::string with_coordinate(std::string_view x) {
-    return R"({"vertices": [[)" + std::string(x) + R"(, 0]], "edges": []})";
-}
+std::string with_coordinate(std::string_view x) { return R"({"vertices": [[)" + std::string(x) + R"(, 0]], "edges": []})"; }
 
 // ------------------------------------------------------------------ reader API
 
@@ -227,7 +225,8 @@ TEST(JsonSyntax, BadLiterals) {
     expect_syntax(with_coordinate("nullx"), "line 1, column 16: invalid literal 'nullx'");
     expect_syntax(with_coordinate("truefalse"), "invalid literal 'truefalse'");
     expect_syntax(with_coordinate("undefined"), "line 1, column 16: invalid literal 'undefined'");
-    expect_syntax(with_coordinate("'1'"), "line 1, column 16: unexpected single quote: JSON strings are written in double quotes");
+    expect_syntax(with_coordinate("'1'"),
+                  "line 1, column 16: unexpected single quote: JSON strings are written in double quotes");
     expect_syntax(with_coordinate("/* c */ 1"), "line 1, column 16: unexpected '/': JSON has no comments");
     expect_syntax(with_coordinate("\x01"), "line 1, column 16: unexpected control character U+0001: expected a JSON value");
     expect_syntax(with_coordinate("\xC3\xA9"), "line 1, column 16: unexpected character U+00E9");
@@ -303,8 +302,9 @@ TEST(JsonSyntax, Strings) {
                   "line 1, column 32: unpaired surrogate '\\uDC00' in a string: a low surrogate must follow a high one");
     expect_syntax("{\"vertices\": [], \"edges\": [], \"a\tb\": 1}",
                   "line 1, column 33: control character U+0009 in a string: escape it as \\t");
-    expect_syntax("{\"vertices\": [], \"edges\": [], \"ab\n\": 1}",
-                  "line 1, column 34: control character U+000A in a string: escape it as \\n (or is a closing '\"' missing?)");
+    expect_syntax(
+        "{\"vertices\": [], \"edges\": [], \"ab\n\": 1}",
+        "line 1, column 34: control character U+000A in a string: escape it as \\n (or is a closing '\"' missing?)");
     expect_syntax(std::string("{\"vertices\": [], \"edges\": [], \"a\0\": 1}", 38),
                   "line 1, column 33: control character U+0000 in a string: escape it as \\u0000");
     expect_syntax(R"({"vertices": [], "edges": [], "abc)",
@@ -344,14 +344,18 @@ TEST(JsonSyntax, Separators) {
                   "line 1, column 13: unexpected character '[': expected ':' after the key \"vertices\"");
     expect_syntax(R"({"vertices": [] "edges": []})",
                   "line 1, column 17: unexpected character '\"': expected ',' or '}' after an object member");
-    expect_syntax(R"({vertices: [], "edges": []})", "line 1, column 2: unexpected character 'v': JSON keys must be in double quotes");
-    expect_syntax(R"({'vertices': []})", "line 1, column 2: unexpected single quote: JSON keys are written in double quotes");
+    expect_syntax(R"({vertices: [], "edges": []})",
+                  "line 1, column 2: unexpected character 'v': JSON keys must be in double quotes");
+    expect_syntax(R"({'vertices': []})",
+                  "line 1, column 2: unexpected single quote: JSON keys are written in double quotes");
     expect_syntax(R"({1: []})", "line 1, column 2: unexpected character '1': expected a key in double quotes");
     expect_syntax(R"({"vertices": [,], "edges": []})", "line 1, column 15: unexpected character ',': expected a JSON value");
     expect_syntax(R"({"vertices": [[0, 0]}, "edges": []})",
                   "line 1, column 21: unexpected character '}': expected ',' or ']' after an array element");
-    expect_syntax(R"({"vertices": [], "edges": [], "x": })", "line 1, column 36: unexpected character '}': expected a JSON value");
-    expect_syntax(R"([[], []] ])", "line 1, column 10: unexpected content after the end of the JSON document (character ']')");
+    expect_syntax(R"({"vertices": [], "edges": [], "x": })",
+                  "line 1, column 36: unexpected character '}': expected a JSON value");
+    expect_syntax(R"([[], []] ])",
+                  "line 1, column 10: unexpected content after the end of the JSON document (character ']')");
 }
 
 TEST(JsonSyntax, NestingLimit) {
@@ -359,7 +363,8 @@ TEST(JsonSyntax, NestingLimit) {
     const std::string ok = R"({"vertices": [], "edges": [], "deep": )" + std::string(255, '[') + std::string(255, ']') + "}";
     EXPECT_NO_THROW(static_cast<void>(read_graph(ok)));
     // The 257th level is a syntax error at its bracket (column 38 + 256).
-    const std::string deep = R"({"vertices": [], "edges": [], "deep": )" + std::string(256, '[') + std::string(256, ']') + "}";
+    const std::string deep = R"({"vertices": [], "edges": [], "deep": )" + std::string(256, '[') + std::string(256, ']') +
+                             "}";
     expect_syntax(deep, "line 1, column 294: nesting deeper than 256 levels");
 }
 

@@ -32,9 +32,9 @@ public:
         std::uniform_int_distribution<int> small(-4, 4);
         switch (family) {
             case 0: return {static_cast<double>(small(rng_)), static_cast<double>(small(rng_))};
-            case 1: return {1e15 + small(rng_), 1e15 + small(rng_)};                      // huge offset, unit steps
-            case 2: return {small(rng_) * 0x1p-1070, small(rng_) * 0x1p-1072};            // subnormals
-            case 3: return {small(rng_) * 0x1p1020, small(rng_) * 0x1p1021};              // near DBL_MAX
+            case 1: return {1e15 + small(rng_), 1e15 + small(rng_)};            // huge offset, unit steps
+            case 2: return {small(rng_) * 0x1p-1070, small(rng_) * 0x1p-1072};  // subnormals
+            case 3: return {small(rng_) * 0x1p1020, small(rng_) * 0x1p1021};    // near DBL_MAX
             default: return {std::ldexp(1.0 + small(rng_) * 0x1p-52, small(rng_)), 0.5 + small(rng_) * 0x1p-53};
         }
     }

@@ -3,11 +3,11 @@
 // no rounding at all.
 #include <gtest/gtest.h>
 
-#include <boost/multiprecision/cpp_int.hpp>
 #include <bit>
+#include <boost/multiprecision/cpp_int.hpp>
 #include <cfloat>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <random>
 #include <vector>
@@ -358,8 +358,8 @@ TEST(SegmentContact, AgreesWithRationalBruteForce) {
         const dcel::Contact expected = oracle_contact(a, b, c, d);
         ++counts[static_cast<int>(expected)];
         ASSERT_EQ(dcel::segment_contact(a, b, c, d), expected)
-            << "(" << a.x << "," << a.y << ")-(" << b.x << "," << b.y << ") vs (" << c.x << "," << c.y << ")-(" << d.x
-            << "," << d.y << ")";
+            << "(" << a.x << "," << a.y << ")-(" << b.x << "," << b.y << ") vs (" << c.x << "," << c.y << ")-(" << d.x << ","
+            << d.y << ")";
     }
     for (const int n : counts) EXPECT_GT(n, 100);  // every kind of contact occurred
 }

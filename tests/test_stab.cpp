@@ -74,14 +74,13 @@ TEST(Stab, LinesAcrossTheCountries) {
     EXPECT_EQ(stab_line(d, {-1, 3}, {1, 3}, half_edge_of(EdgeId(2), 0)), y3);
     EXPECT_EQ(stab_line(d, {-1, 3}, {1, 3}), y3);
     EXPECT_EQ(stab_line(d, {1, 3}, {-1, 3}), reversed(y3));
-    EXPECT_EQ(faces_in_order(y3), (std::vector<FaceId>{FaceId(0), FaceId(1), FaceId(1), FaceId(2), FaceId(3),
-                                                        FaceId(2), FaceId(0)}));
+    EXPECT_EQ(faces_in_order(y3),
+              (std::vector<FaceId>{FaceId(0), FaceId(1), FaceId(1), FaceId(2), FaceId(3), FaceId(2), FaceId(0)}));
     // y = 0, along the coast; and a line through a corner only.
     EXPECT_EQ(stab_line(d, {-1, 0}, {1, 0}), (Pieces{F(0), V(0), A(0), V(1), A(1), V(2), F(0)}));
     EXPECT_EQ(stab_line(d, {8, 6}, {9, 5}), (Pieces{F(0), V(3), F(0)}));  // y = 14 - x touches the corner
     // y = x - 2 also meets the corner, after crossing the map from (2, 0).
-    EXPECT_EQ(stab_line(d, {8, 6}, {9, 7}),
-              (Pieces{F(0), X(0), F(1), X(6), F(2), X(10), F(3), X(9), F(2), V(3), F(0)}));
+    EXPECT_EQ(stab_line(d, {8, 6}, {9, 7}), (Pieces{F(0), X(0), F(1), X(6), F(2), X(10), F(3), X(9), F(2), V(3), F(0)}));
     EXPECT_EQ(stab_line(d, {20, 0}, {20, 1}), (Pieces{F(0)}));
     EXPECT_THROW((void)stab_line(d, {20, 0}, {20, 1}, HalfEdgeId(0)), TopologyError);
     EXPECT_THROW((void)stab_line(d, {1, 1}, {1, 1}), InvalidInput);
@@ -102,8 +101,8 @@ TEST(Stab, WalksOnRandomMapsMatchBruteForce) {
             const Point b = k % 5 == 0 ? a : Point{coord(), coord()};
             const Pieces p = stab_segment(d, a, b);
             const std::string problem = testing::check_walk(d, a, b, p);
-            ASSERT_EQ(problem, "") << "seed " << seed << " from (" << a.x << ", " << a.y << ") to (" << b.x << ", "
-                                   << b.y << ")";
+            ASSERT_EQ(problem, "") << "seed " << seed << " from (" << a.x << ", " << a.y << ") to (" << b.x << ", " << b.y
+                                   << ")";
             ASSERT_EQ(stab_segment(d, b, a), reversed(p)) << "seed " << seed;
             pieces_seen += p.size();
             if (!(a == b)) {

@@ -18,8 +18,8 @@ namespace {
 PlanarGraph rich_graph() {
     PlanarGraph g;
     g.vertices = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {5, 2}, {2, 5}, {8, 8}, {1, 9}, {20, 20}, {3, 3}};
-    for (const auto& [u, v] : std::vector<std::pair<Index, Index>>{
-             {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 4}, {3, 8}}) {
+    for (const auto& [u, v] :
+         std::vector<std::pair<Index, Index>>{{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 4}, {3, 8}}) {
         g.edges.push_back({VertexId(u), VertexId(v)});
     }
     return g;

@@ -12,9 +12,9 @@
 namespace dcel::bench {
 namespace {
 
-using BoostGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS,
-                                         boost::property<boost::vertex_index_t, int>,
-                                         boost::property<boost::edge_index_t, int>>;
+using BoostGraph =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::property<boost::vertex_index_t, int>,
+                          boost::property<boost::edge_index_t, int>>;
 using BoostEdge = boost::graph_traits<BoostGraph>::edge_descriptor;
 using Embedding = std::vector<std::vector<BoostEdge>>;
 

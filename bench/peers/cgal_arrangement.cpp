@@ -55,7 +55,8 @@ PeerResult cgal_cycles(const PlanarGraph& g, bool want_cycles) {
     }
     Cycles& cycles = result.cycles;
     std::map<std::pair<double, double>, std::uint32_t> id;
-    for (std::size_t v = 0; v < g.vertices.size(); ++v) id[{g.vertices[v].x, g.vertices[v].y}] = static_cast<std::uint32_t>(v);
+    for (std::size_t v = 0; v < g.vertices.size(); ++v)
+        id[{g.vertices[v].x, g.vertices[v].y}] = static_cast<std::uint32_t>(v);
     for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
         for (auto c = f->outer_ccbs_begin(); c != f->outer_ccbs_end(); ++c) read_ccb(*c, id, cycles);
         for (auto c = f->inner_ccbs_begin(); c != f->inner_ccbs_end(); ++c) read_ccb(*c, id, cycles);

@@ -9,8 +9,8 @@
 namespace dcel::fuzz {
 namespace {
 
-constexpr const char* kNames[] = {"bad-index", "bad-coordinate", "duplicate-point", "self-loop",
-                                  "duplicate-edge", "crossing", "touch", "overlap"};
+constexpr const char* kNames[] = {"bad-index",      "bad-coordinate", "duplicate-point", "self-loop",
+                                  "duplicate-edge", "crossing",       "touch",           "overlap"};
 
 void set(Defects& d, Defect k) { d.set(static_cast<std::size_t>(k)); }
 

@@ -119,8 +119,7 @@ inline ExpectedEdit expected_after(const PlanarGraph& before, const testing::Ste
 inline std::optional<std::string> graph_difference(const PlanarGraph& got, const PlanarGraph& want) {
     if (got.vertices.size() != want.vertices.size() || got.edges.size() != want.edges.size()) {
         return std::to_string(got.vertices.size()) + " vertices and " + std::to_string(got.edges.size()) +
-               " edges, the model has " + std::to_string(want.vertices.size()) + " and " +
-               std::to_string(want.edges.size());
+               " edges, the model has " + std::to_string(want.vertices.size()) + " and " + std::to_string(want.edges.size());
     }
     for (std::size_t i = 0; i < got.vertices.size(); ++i) {
         const Point a = got.vertices[i], b = want.vertices[i];
@@ -132,8 +131,8 @@ inline std::optional<std::string> graph_difference(const PlanarGraph& got, const
     for (std::size_t k = 0; k < got.edges.size(); ++k) {
         if (!(got.edges[k] == want.edges[k])) {
             return "edge e" + std::to_string(k) + " is v" + std::to_string(got.edges[k].u.index()) + "-v" +
-                   std::to_string(got.edges[k].v.index()) + ", the model has v" +
-                   std::to_string(want.edges[k].u.index()) + "-v" + std::to_string(want.edges[k].v.index());
+                   std::to_string(got.edges[k].v.index()) + ", the model has v" + std::to_string(want.edges[k].u.index()) +
+                   "-v" + std::to_string(want.edges[k].v.index());
         }
     }
     return std::nullopt;

@@ -19,11 +19,11 @@ namespace dcel::fuzz {
 
 }  // namespace dcel::fuzz
 
-#define FUZZ_CHECK(cond, ...)                                                                         \
-    do {                                                                                              \
-        if (!(cond)) {                                                                                \
-            std::ostringstream fuzz_check_message_;                                                   \
-            fuzz_check_message_ << __VA_ARGS__;                                                       \
-            ::dcel::fuzz::check_failed(__FILE__, __LINE__, #cond, fuzz_check_message_.str());         \
-        }                                                                                             \
+#define FUZZ_CHECK(cond, ...)                                                                 \
+    do {                                                                                      \
+        if (!(cond)) {                                                                        \
+            std::ostringstream fuzz_check_message_;                                           \
+            fuzz_check_message_ << __VA_ARGS__;                                               \
+            ::dcel::fuzz::check_failed(__FILE__, __LINE__, #cond, fuzz_check_message_.str()); \
+        }                                                                                     \
     } while (false)

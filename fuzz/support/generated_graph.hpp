@@ -81,10 +81,10 @@ inline GeneratedGraph decode_generated_graph(TokenReader& in, std::size_t max_ve
         } else if (t.is_word("rotate") || t.is_word("mirror") || t.is_word("translate") || t.is_word("scale")) {
             generate();
             ++steps;
-            const gen::Transform kind = t.is_word("rotate")    ? gen::Transform::Rotate90
-                                        : t.is_word("mirror")  ? gen::Transform::Mirror
-                                        : t.is_word("scale")   ? gen::Transform::ScalePow2
-                                                               : gen::Transform::Translate;
+            const gen::Transform kind = t.is_word("rotate")   ? gen::Transform::Rotate90
+                                        : t.is_word("mirror") ? gen::Transform::Mirror
+                                        : t.is_word("scale")  ? gen::Transform::ScalePow2
+                                                              : gen::Transform::Translate;
             const std::int64_t amount = kind == gen::Transform::Rotate90 || kind == gen::Transform::Mirror
                                             ? 0
                                             : signed_whole_number(in.number_or(0));

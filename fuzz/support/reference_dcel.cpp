@@ -50,16 +50,14 @@ std::optional<Judgement> check_ids(const DcelDump& d) {
 }
 
 // 0 for directions in [0, pi) (y > 0, or y == 0 and x > 0), 1 for [pi, 2 pi).
-int half_plane(const ExactPoint& c, const ExactPoint& p) {
-    return (p.y > c.y || (p.y == c.y && p.x > c.x)) ? 0 : 1;
-}
+int half_plane(const ExactPoint& c, const ExactPoint& p) { return (p.y > c.y || (p.y == c.y && p.x > c.x)) ? 0 : 1; }
 
 struct Expected {
-    std::vector<Index> next;            // per half-edge
-    std::vector<Index> cycle_of;        // per half-edge
+    std::vector<Index> next;      // per half-edge
+    std::vector<Index> cycle_of;  // per half-edge
     std::vector<std::vector<Index>> cycles;
-    std::vector<Index> face_of_cycle;   // expected face id (0: unbounded)
-    std::vector<Index> outer_cycle;     // per expected face; kNoIndex for the unbounded face
+    std::vector<Index> face_of_cycle;          // expected face id (0: unbounded)
+    std::vector<Index> outer_cycle;            // per expected face; kNoIndex for the unbounded face
     std::vector<std::vector<Index>> inner;     // per expected face: cycle ids, sorted
     std::vector<std::vector<Index>> isolated;  // per expected face: vertex ids, sorted
 };

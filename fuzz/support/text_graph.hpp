@@ -9,10 +9,9 @@
 // near-degenerate coordinates, "scale 5e-324" subnormals, and "nan"/"inf"
 // bad coordinates. "on i j t" adds the point p_i + t (p_j - p_i), rounded:
 // within rounding of the line through p_i and p_j (i and j modulo the points
-// so far), which is where exact and floating-point orientation disagree. An index that is not an integer in [0, 2^32 - 2] becomes
-// the null id, which build() rejects like any out-of-range index. Decoding
-// stops at the first other word, which is left in the reader for the
-// harness (check reads its corruption commands from there).
+// so far), which is where exact and floating-point orientation disagree. An index that is not an integer in [0, 2^32 - 2]
+// becomes the null id, which build() rejects like any out-of-range index. Decoding stops at the first other word, which is
+// left in the reader for the harness (check reads its corruption commands from there).
 #pragma once
 
 #include <cmath>

@@ -35,34 +35,34 @@ inline const bool kSeedFixed = ::setenv("RC_PARAMS", "seed=6021 max_success=200"
 // vertices. Splits pick a point exactly on the edge (1/4, 1/2 or 3/4 of the
 // way: exact for the dyadic coordinates that arise).
 inline rc::Gen<Step> growing_step() {
-    return rc::gen::build<Step>(
-        rc::gen::set(&Step::op, rc::gen::weightedElement<Op>({{4, Op::AddVertex},
-                                                              {8, Op::AddEdge},
-                                                              {3, Op::AddEdgeToPoint},
-                                                              {3, Op::SplitEdge},
-                                                              {2, Op::RemoveEdge},
-                                                              {1, Op::RemoveVertex},
-                                                              {2, Op::MergeEdges}})),
-        rc::gen::set(&Step::a, rc::gen::inRange<std::uint32_t>(0, 64)),
-        rc::gen::set(&Step::b, rc::gen::inRange<std::uint32_t>(0, 64)),
-        rc::gen::set(&Step::x, rc::gen::inRange(0, kGrid + 1)), rc::gen::set(&Step::y, rc::gen::inRange(0, kGrid + 1)));
+    return rc::gen::build<Step>(rc::gen::set(&Step::op, rc::gen::weightedElement<Op>({{4, Op::AddVertex},
+                                                                                      {8, Op::AddEdge},
+                                                                                      {3, Op::AddEdgeToPoint},
+                                                                                      {3, Op::SplitEdge},
+                                                                                      {2, Op::RemoveEdge},
+                                                                                      {1, Op::RemoveVertex},
+                                                                                      {2, Op::MergeEdges}})),
+                                rc::gen::set(&Step::a, rc::gen::inRange<std::uint32_t>(0, 64)),
+                                rc::gen::set(&Step::b, rc::gen::inRange<std::uint32_t>(0, 64)),
+                                rc::gen::set(&Step::x, rc::gen::inRange(0, kGrid + 1)),
+                                rc::gen::set(&Step::y, rc::gen::inRange(0, kGrid + 1)));
 }
 
 // Steps that are often refused: new edges in dense maps, new points at
 // vertices or on edges, splits off the edge, removals of vertices with edges,
 // merges at corners.
 inline rc::Gen<Step> hostile_step() {
-    return rc::gen::build<Step>(
-        rc::gen::set(&Step::op, rc::gen::weightedElement<Op>({{3, Op::AddVertex},
-                                                              {6, Op::AddEdge},
-                                                              {3, Op::AddEdgeToPoint},
-                                                              {3, Op::SplitEdge},
-                                                              {2, Op::RemoveVertex},
-                                                              {2, Op::MergeEdges}})),
-        rc::gen::set(&Step::a, rc::gen::inRange<std::uint32_t>(0, 64)),
-        rc::gen::set(&Step::b, rc::gen::inRange<std::uint32_t>(0, 64)),
-        rc::gen::set(&Step::x, rc::gen::inRange(-1, kGrid + 2)), rc::gen::set(&Step::y, rc::gen::inRange(-1, kGrid + 2)),
-        rc::gen::set(&Step::at, rc::gen::inRange(0, 3)));
+    return rc::gen::build<Step>(rc::gen::set(&Step::op, rc::gen::weightedElement<Op>({{3, Op::AddVertex},
+                                                                                      {6, Op::AddEdge},
+                                                                                      {3, Op::AddEdgeToPoint},
+                                                                                      {3, Op::SplitEdge},
+                                                                                      {2, Op::RemoveVertex},
+                                                                                      {2, Op::MergeEdges}})),
+                                rc::gen::set(&Step::a, rc::gen::inRange<std::uint32_t>(0, 64)),
+                                rc::gen::set(&Step::b, rc::gen::inRange<std::uint32_t>(0, 64)),
+                                rc::gen::set(&Step::x, rc::gen::inRange(-1, kGrid + 2)),
+                                rc::gen::set(&Step::y, rc::gen::inRange(-1, kGrid + 2)),
+                                rc::gen::set(&Step::at, rc::gen::inRange(0, 3)));
 }
 
 // A script of up to about 3 * RapidCheck's size (100 at most) steps: long

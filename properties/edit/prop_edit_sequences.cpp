@@ -2,9 +2,9 @@
 // equals the rebuild of its own graph; an edit succeeds exactly when the
 // oracle (build() on the resulting graph) says it must; and user data stays
 // on the right elements.
-#include <algorithm>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>  // after gtest.h, which it needs
+#include <algorithm>
 
 #include "edit_steps.hpp"
 #include "support/rebuild_compare.hpp"
@@ -44,8 +44,7 @@ RC_GTEST_PROP(EditProperties, prop_edit_sequences_match_rebuild, ()) {
     }
     RC_CLASSIFY(applied >= 20, "20+ edits applied");
     RC_CLASSIFY(d.num_faces() >= 3, "3+ faces at the end");
-    RC_CLASSIFY(std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.op == Op::MergeEdges; }),
-                "has merges");
+    RC_CLASSIFY(std::any_of(steps.begin(), steps.end(), [](const Step& s) { return s.op == Op::MergeEdges; }), "has merges");
 }
 
 }  // namespace

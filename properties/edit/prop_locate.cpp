@@ -31,7 +31,9 @@ Dcel grown_map() {
 
 rc::Gen<Point> half_grid_point() {
     return rc::gen::map(rc::gen::pair(rc::gen::inRange(-2, 2 * kGrid + 3), rc::gen::inRange(-2, 2 * kGrid + 3)),
-                        [](std::pair<int, int> ij) { return Point{ij.first / 2.0, ij.second / 2.0}; });
+                        [](std::pair<int, int> ij) {
+                            return Point{ij.first / 2.0, ij.second / 2.0};
+                        });
 }
 
 RC_GTEST_PROP(LocateProperties, prop_locator_agrees_with_scan, ()) {

@@ -26,7 +26,8 @@ public:
     explicit TrackedData(const Dcel& d)
         : where_(d),
           span_(d, Span{}, [](Span& kept, Span&& absorbed) { kept = hull(kept, absorbed); }),
-          labels_(d, {}, [](std::set<int>& kept, std::set<int>&& absorbed) { kept.insert(absorbed.begin(), absorbed.end()); }) {
+          labels_(d, {},
+                  [](std::set<int>& kept, std::set<int>&& absorbed) { kept.insert(absorbed.begin(), absorbed.end()); }) {
         for (Index v = 0; v < d.num_vertices(); ++v) where_[VertexId(v)] = d.point(VertexId(v));
         for (Index e = 0; e < d.num_edges(); ++e) span_[EdgeId(e)] = ends(d, EdgeId(e));
         for (Index f = 0; f < d.num_faces(); ++f) labels_[FaceId(f)] = {static_cast<int>(f)};
@@ -69,7 +70,8 @@ public:
         return out;
     }
 
-    [[nodiscard]] std::string labels_problem(const Dcel& d, const std::vector<std::pair<Point, std::set<int>>>& before) const {
+    [[nodiscard]] std::string labels_problem(const Dcel& d,
+                                             const std::vector<std::pair<Point, std::set<int>>>& before) const {
         for (const auto& [p, had] : before) {
             const Location l = locate_by_scan(d, p);
             if (l.kind != Location::Kind::Face) continue;  // a new edge or vertex there

@@ -16,14 +16,18 @@ void showValue(const GraphCase& c, std::ostream& os) {
 rc::Gen<GraphCase> graphs(std::vector<gen::Family> families) {
     const rc::Gen<gen::Params> params = rc::gen::withSize([families](int size) {
         return rc::gen::apply(
-            [](gen::Family f, std::uint64_t seed, int n) { return gen::Params{f, seed, static_cast<std::size_t>(n)}; },
+            [](gen::Family f, std::uint64_t seed, int n) {
+                return gen::Params{f, seed, static_cast<std::size_t>(n)};
+            },
             rc::gen::elementOf(families), rc::gen::arbitrary<std::uint64_t>(), rc::gen::inRange(0, 3 * size + 4));
     });
     return rc::gen::mapcat(rc::gen::noShrink(params), [](const gen::Params& p) {
         return rc::Gen<GraphCase>([p](const rc::Random&, int) {
             return rc::shrinkable::shrinkRecur(GraphCase{p, gen::generate(p)}, [](const GraphCase& c) {
                 return rc::seq::map(rc::seq::fromContainer(gen::shrink_candidates(c.graph)),
-                                    [params = c.params](PlanarGraph g) { return GraphCase{params, std::move(g)}; });
+                                    [params = c.params](PlanarGraph g) {
+                                        return GraphCase{params, std::move(g)};
+                                    });
             });
         });
     });

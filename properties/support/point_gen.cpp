@@ -17,7 +17,7 @@ Gen<double> coordinate(int style) {
     switch (style) {
         case 0: return gen::map(gen::inRange(-8, 9), [](int v) { return static_cast<double>(v); });
         case 1: return gen::map(gen::inRange(-8, 9), [](int v) { return 1e15 + v; });  // large offset, tiny differences
-        case 2:  // tiny magnitudes, down to subnormals
+        case 2:                                                                        // tiny magnitudes, down to subnormals
             return gen::map(gen::pair(gen::inRange(-8, 9), gen::inRange(1000, 1075)),
                             [](std::pair<int, int> v) { return std::ldexp(static_cast<double>(v.first), -v.second); });
         case 3:  // near DBL_MAX: differences overflow
@@ -77,8 +77,11 @@ void showValue(const Triple& t, std::ostream& os) {
 Gen<Triple> adversarial_triples() {
     return gen::mapcat(gen::inRange(0, 9), [](int style) {
         if (style >= 6) return near_diagonal();  // a third of the cases: the hardest ones
-        const Gen<Triple> any = gen::apply([](Point a, Point b, Point c) { return Triple{{a, b, c}}; }, point(style),
-                                           point(style), point(style));
+        const Gen<Triple> any = gen::apply(
+            [](Point a, Point b, Point c) {
+                return Triple{{a, b, c}};
+            },
+            point(style), point(style), point(style));
         return gen::oneOf(any, gen::apply(near_collinear, any, gen::inRange(-3, 4), gen::inRange(0, 3)));
     });
 }

@@ -88,30 +88,29 @@ void add_diff_command(CLI::App& app, Action& action) {
     auto* case_opt =
         cmd->add_option("--case", *only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
     cmd->add_option("--svg", *svg, "On a failure, draw the counterexample into FILE (SVG)")->type_name("FILE");
-    cmd->callback(
-        [&action, options, cases, cases_opt, time_s, time_opt, timeout_ms, shrink_s, only_case, case_opt, svg] {
-            action = [=] {
-                DiffOptions o = *options;
-                o.limits.timeout = std::chrono::milliseconds(*timeout_ms);
-                o.shrink_time = std::chrono::milliseconds(static_cast<long>(*shrink_s * 1000));
-                if (*time_opt) o.time = std::chrono::milliseconds(static_cast<long>(*time_s * 1000));
-                if (*cases_opt || !*time_opt) o.cases = *cases;  // --time alone: as many as fit
-                if (*case_opt) o.only_case = *only_case;
-                Progress progress;
-                if (::isatty(STDERR_FILENO) != 0) {
-                    progress = [](const std::string& line) { std::fprintf(stderr, "\r\x1b[K%s", line.c_str()); };
-                }
-                const DiffResult result = run_diff(o, progress);
-                if (progress) std::fprintf(stderr, "\r\x1b[K");
-                std::string report = format_report(o, result);
-                if (result.failure && !svg->empty()) {
-                    write_svg(*svg, o, *result.failure);
-                    report += "drawn in " + *svg + "\n";
-                }
-                write_stdout(report);
-                return result.failure ? kExitInvalid : kExitOk;
-            };
-        });
+    cmd->callback([&action, options, cases, cases_opt, time_s, time_opt, timeout_ms, shrink_s, only_case, case_opt, svg] {
+        action = [=] {
+            DiffOptions o = *options;
+            o.limits.timeout = std::chrono::milliseconds(*timeout_ms);
+            o.shrink_time = std::chrono::milliseconds(static_cast<long>(*shrink_s * 1000));
+            if (*time_opt) o.time = std::chrono::milliseconds(static_cast<long>(*time_s * 1000));
+            if (*cases_opt || !*time_opt) o.cases = *cases;  // --time alone: as many as fit
+            if (*case_opt) o.only_case = *only_case;
+            Progress progress;
+            if (::isatty(STDERR_FILENO) != 0) {
+                progress = [](const std::string& line) { std::fprintf(stderr, "\r\x1b[K%s", line.c_str()); };
+            }
+            const DiffResult result = run_diff(o, progress);
+            if (progress) std::fprintf(stderr, "\r\x1b[K");
+            std::string report = format_report(o, result);
+            if (result.failure && !svg->empty()) {
+                write_svg(*svg, o, *result.failure);
+                report += "drawn in " + *svg + "\n";
+            }
+            write_stdout(report);
+            return result.failure ? kExitInvalid : kExitOk;
+        };
+    });
 }
 
 }  // namespace dcel::cli

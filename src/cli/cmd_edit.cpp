@@ -37,8 +37,8 @@ std::string json_id_change(const char* kind, const IdChange<Id>& c) {
 
 std::string json_change(const Change& c) {
     std::string s;
-    for (const std::string& part : {json_id_change("vertices", c.vertices), json_id_change("edges", c.edges),
-                                    json_id_change("faces", c.faces)}) {
+    for (const std::string& part :
+         {json_id_change("vertices", c.vertices), json_id_change("edges", c.edges), json_id_change("faces", c.faces)}) {
         if (!part.empty()) s += (s.empty() ? "" : ", ") + part;
     }
     return "{" + s + "}";
@@ -86,9 +86,7 @@ public:
                 case Op::AddEdgeToPoint:
                     out = op + ", \"from\": " + std::to_string(s.first) + ", \"to\": " + json_point(s.p);
                     return edited(out, add_edge_to_point(d_, VertexId(s.first), s.p));
-                case Op::AddVertex:
-                    out = op + ", \"at\": " + json_point(s.p);
-                    return edited(out, add_vertex(d_, s.p));
+                case Op::AddVertex: out = op + ", \"at\": " + json_point(s.p); return edited(out, add_vertex(d_, s.p));
                 case Op::RemoveEdge:
                     out = op + ", \"edge\": " + std::to_string(s.first);
                     return edited(out, remove_edge(d_, EdgeId(s.first)));

@@ -46,8 +46,8 @@ void add_locate_command(CLI::App& app, Action& action) {
             const FaceNames* shown = named.empty() ? nullptr : &names;
             if (!xy->empty()) {
                 const Point p{parse_coordinate((*xy)[0], "X"), parse_coordinate((*xy)[1], "Y")};
-                write_stdout("{\"point\": " + json_point(p) + ", " +
-                             json_location_members(d, locate_by_scan(d, p), shown) + "}\n");
+                write_stdout("{\"point\": " + json_point(p) + ", " + json_location_members(d, locate_by_scan(d, p), shown) +
+                             "}\n");
                 return kExitOk;
             }
             const std::vector<Point> points = load_points(*points_path);

@@ -23,12 +23,13 @@ void write_file(const std::string& path, const std::string& text) {
 
 void add_render_command(CLI::App& app, Action& action) {
     auto* cmd = app.add_subcommand("render", "Draw the graph's DCEL as SVG: faces tinted, half-edges as arrows");
-    cmd->footer("Each bounded face gets its own tint (the unbounded face stays white); every half-edge\n"
-                "is an arrow just to the left of its edge, in its face's colour, so each face's\n"
-                "boundary reads as a counterclockwise loop of arrows (holes clockwise). Vertex ids\n"
-                "are labelled; isolated vertices are rings.\n"
-                "Example:\n"
-                "  dcel gen --family nested-polygons --seed 3 --vertices 20 | dcel render - -o nested.svg");
+    cmd->footer(
+        "Each bounded face gets its own tint (the unbounded face stays white); every half-edge\n"
+        "is an arrow just to the left of its edge, in its face's colour, so each face's\n"
+        "boundary reads as a counterclockwise loop of arrows (holes clockwise). Vertex ids\n"
+        "are labelled; isolated vertices are rings.\n"
+        "Example:\n"
+        "  dcel gen --family nested-polygons --seed 3 --vertices 20 | dcel render - -o nested.svg");
     auto path = std::make_shared<std::string>("-");
     auto output = std::make_shared<std::string>();
     auto title = std::make_shared<std::string>();

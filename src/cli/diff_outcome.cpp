@@ -64,10 +64,9 @@ Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimi
         ProcessResult as_signal = run;
         as_signal.end = ProcessEnd::Signalled;
         as_signal.signal = run.exit_status - kShellSignalBase;
-        return failed(
-            FailureKind::Crash,
-            describe_end(as_signal, limits) + " (/bin/sh exit status " + std::to_string(run.exit_status) + ")",
-            as_signal);
+        return failed(FailureKind::Crash,
+                      describe_end(as_signal, limits) + " (/bin/sh exit status " + std::to_string(run.exit_status) + ")",
+                      as_signal);
     }
     if (run.exit_status != 0) return failed(FailureKind::NonZeroExit, describe_end(run, limits), run);
     if (run.out.find_first_not_of(" \t\r\n") == std::string::npos) {

@@ -19,9 +19,7 @@ std::string seconds(std::chrono::milliseconds ms) {
     return s.str();
 }
 
-std::string count(std::size_t n, const std::string& noun) {
-    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-}
+std::string count(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
 std::string size_of(const PlanarGraph& g) {
     return std::to_string(g.vertices.size()) + (g.vertices.size() == 1 ? " vertex, " : " vertices, ") +
@@ -64,8 +62,7 @@ std::string shell_quote(const std::string& text) {
 std::string replay_command(const DiffOptions& options, std::size_t case_number) {
     std::string cmd = "dcel diff --impl " + shell_quote(options.impl) + " --seed " + std::to_string(options.seed) +
                       " --case " + std::to_string(case_number);
-    if (options.max_vertices != DiffOptions{}.max_vertices)
-        cmd += " --max-vertices " + std::to_string(options.max_vertices);
+    if (options.max_vertices != DiffOptions{}.max_vertices) cmd += " --max-vertices " + std::to_string(options.max_vertices);
     if (options.stream) cmd += " --stream";
     cmd += " --timeout-ms " + std::to_string(options.limits.timeout.count());
     return cmd;
@@ -76,8 +73,8 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
     if (!result.failure) {
         s << "dcel diff: agrees on " << count(result.cases_run, "case");
         if (result.cases_run > 0) {
-            s << " (" << result.first_case << " to " << result.first_case + result.cases_run - 1 << ", seed "
-              << options.seed << ")";
+            s << " (" << result.first_case << " to " << result.first_case + result.cases_run - 1 << ", seed " << options.seed
+              << ")";
         }
         s << " in " << seconds(result.elapsed);
         if (result.stopped_by_time) s << "; stopped by --time";
@@ -87,19 +84,18 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
     const Counterexample& c = *result.failure;
     const Outcome& o = c.outcome;
     s << "dcel diff: " << failure_label(c.first) << " on case " << c.spec.number << " (family "
-      << gen::family_name(c.spec.params.family) << ", " << size_of(c.original) << ", seed " << options.seed
-      << "), found in " << seconds(result.found_after) << " after "
-      << count(c.spec.number - result.first_case, "agreeing case") << "\n";
+      << gen::family_name(c.spec.params.family) << ", " << size_of(c.original) << ", seed " << options.seed << "), found in "
+      << seconds(result.found_after) << " after " << count(c.spec.number - result.first_case, "agreeing case") << "\n";
     if (!c.reproduced) {
         s << "not shrunk: run alone in a fresh process, the case did not fail the same way again, so it depends "
              "on the cases before it (--stream state) or the command is not deterministic\n";
     } else if (c.steps == 0) {
-        s << "no smaller graph fails the same way (" << count(c.attempts, "attempt") << " in "
-          << seconds(c.shrink_elapsed) << (c.budget_spent ? ", stopped by the shrink budget" : "") << ")\n";
+        s << "no smaller graph fails the same way (" << count(c.attempts, "attempt") << " in " << seconds(c.shrink_elapsed)
+          << (c.budget_spent ? ", stopped by the shrink budget" : "") << ")\n";
     } else {
         s << "shrunk in " << seconds(c.shrink_elapsed) << " (" << count(c.attempts, "attempt") << ", "
-          << count(c.steps, "smaller failing graph") << " kept"
-          << (c.budget_spent ? ", stopped by the shrink budget" : "") << ") to a graph that fails the same way\n";
+          << count(c.steps, "smaller failing graph") << " kept" << (c.budget_spent ? ", stopped by the shrink budget" : "")
+          << ") to a graph that fails the same way\n";
     }
     s << "counterexample: " << size_of(c.graph) << "\n\n";
 

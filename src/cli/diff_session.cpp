@@ -115,8 +115,8 @@ DiffResult run_diff(const DiffOptions& options, const Progress& progress) {
         if (i == first && could_not_run(o)) {
             std::string why = o.run.err_tail;
             while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
-            throw UsageError("cannot run --impl '" + options.impl + "': /bin/sh " +
-                             describe_end(o.run, options.limits) + (why.empty() ? "" : ": " + printable(why, 300)));
+            throw UsageError("cannot run --impl '" + options.impl + "': /bin/sh " + describe_end(o.run, options.limits) +
+                             (why.empty() ? "" : ": " + printable(why, 300)));
         }
         result.found_after = since(start);
         Counterexample c;

@@ -10,8 +10,9 @@ namespace {
 using io::JsonReader;
 
 constexpr std::string_view kPoint = "a point [x, y]";
-constexpr std::string_view kOps[] = {"name",        "split_edge",  "add_edge",      "add_edge_to_point", "add_vertex",
-                                     "remove_edge", "remove_vertex", "merge_edges", "locate",            "stab"};
+constexpr std::string_view kOps[] = {"name",       "split_edge",  "add_edge",      "add_edge_to_point",
+                                     "add_vertex", "remove_edge", "remove_vertex", "merge_edges",
+                                     "locate",     "stab"};
 
 Point read_point(JsonReader& r) {
     r.begin_array(kPoint);
@@ -40,8 +41,8 @@ std::vector<NamedPoint> read_names(JsonReader& r) {
 
 // The arguments of one operation: an object with the given keys, all required.
 template <std::size_t N>
-void read_arguments(JsonReader& r, ScriptStep::Op op, const std::array<std::string_view, N>& keys,
-                    std::string_view form, ScriptStep& step) {
+void read_arguments(JsonReader& r, ScriptStep::Op op, const std::array<std::string_view, N>& keys, std::string_view form,
+                    ScriptStep& step) {
     r.begin_object(form);
     std::uint64_t seen = 0;
     for (int k = 0; (k = r.next_known_member(keys, seen)) >= 0;) {
@@ -92,13 +93,10 @@ ScriptStep read_step(JsonReader& r) {
             read_arguments(r, step.op, std::array<std::string_view, 2>{"from", "to"}, R"({"from": u, "to": v})", step);
             break;
         case Op::AddEdgeToPoint:
-            read_arguments(r, step.op, std::array<std::string_view, 2>{"from", "to"}, R"({"from": u, "to": [x, y]})",
-                           step);
+            read_arguments(r, step.op, std::array<std::string_view, 2>{"from", "to"}, R"({"from": u, "to": [x, y]})", step);
             break;
         case Op::AddVertex:
-        case Op::Locate:
-            read_arguments(r, step.op, std::array<std::string_view, 1>{"at"}, R"({"at": [x, y]})", step);
-            break;
+        case Op::Locate: read_arguments(r, step.op, std::array<std::string_view, 1>{"at"}, R"({"at": [x, y]})", step); break;
         case Op::RemoveEdge:
             read_arguments(r, step.op, std::array<std::string_view, 1>{"edge"}, R"({"edge": e})", step);
             break;
@@ -107,8 +105,8 @@ ScriptStep read_step(JsonReader& r) {
             read_arguments(r, step.op, std::array<std::string_view, 1>{"vertex"}, R"({"vertex": v})", step);
             break;
         case Op::Stab:
-            read_arguments(r, step.op, std::array<std::string_view, 2>{"from", "to"},
-                           R"({"from": [x, y], "to": [x, y]})", step);
+            read_arguments(r, step.op, std::array<std::string_view, 2>{"from", "to"}, R"({"from": [x, y], "to": [x, y]})",
+                           step);
             break;
     }
     if (r.next_member()) r.fail(InputErrorKind::Shape, "a step holds one operation; split it into several steps");

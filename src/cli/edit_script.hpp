@@ -35,14 +35,25 @@ struct NamedPoint {
 };
 
 struct ScriptStep {
-    enum class Op { Name, SplitEdge, AddEdge, AddEdgeToPoint, AddVertex, RemoveEdge, RemoveVertex, MergeEdges, Locate, Stab };
+    enum class Op {
+        Name,
+        SplitEdge,
+        AddEdge,
+        AddEdgeToPoint,
+        AddVertex,
+        RemoveEdge,
+        RemoveVertex,
+        MergeEdges,
+        Locate,
+        Stab
+    };
     Op op = Op::Locate;
-    std::string where;           // "steps[3]", for messages
+    std::string where;              // "steps[3]", for messages
     std::vector<NamedPoint> names;  // Name: the names to set
-    Index first = kNoIndex;      // edge, vertex, or "from" vertex
-    Index second = kNoIndex;     // "to" vertex
-    Point p;                     // "at", or the "to"/"from" point
-    Point q;                     // Stab: "to"
+    Index first = kNoIndex;         // edge, vertex, or "from" vertex
+    Index second = kNoIndex;        // "to" vertex
+    Point p;                        // "at", or the "to"/"from" point
+    Point q;                        // Stab: "to"
 };
 
 struct EditScript {

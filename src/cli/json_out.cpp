@@ -55,8 +55,8 @@ std::string json_location_members(const Dcel& d, const Location& l, const FaceNa
         case Location::Kind::Edge: {
             const FaceId left = d.face(half_edge_of(l.edge, 0));
             const FaceId right = d.face(half_edge_of(l.edge, 1));
-            std::string s = "\"edge\": " + std::to_string(l.edge.index()) + ", \"faces\": [" +
-                            std::to_string(left.index()) + ", " + std::to_string(right.index()) + "]";
+            std::string s = "\"edge\": " + std::to_string(l.edge.index()) + ", \"faces\": [" + std::to_string(left.index()) +
+                            ", " + std::to_string(right.index()) + "]";
             if (names != nullptr) s += ", \"names\": [" + json_name(names, left) + ", " + json_name(names, right) + "]";
             return s;
         }

@@ -16,8 +16,8 @@ namespace dcel::cli {
 // Face names for the output; an empty name is written as null.
 using FaceNames = FaceData<std::string>;
 
-[[nodiscard]] std::string json_string(std::string_view s);  // quoted and escaped
-[[nodiscard]] std::string json_point(Point p);               // [x, y], shortest round trip
+[[nodiscard]] std::string json_string(std::string_view s);              // quoted and escaped
+[[nodiscard]] std::string json_point(Point p);                          // [x, y], shortest round trip
 [[nodiscard]] std::string json_name(const FaceNames* names, FaceId f);  // "West" or null
 
 // The members after "point": "face": f | "edge": e, "faces": [left of 2e, left of 2e+1] |

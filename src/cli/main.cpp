@@ -9,9 +9,10 @@
 // Setting up the parser can throw only std::bad_alloc, and terminating is right then.
 int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     using namespace dcel::cli;
-    CLI::App app{"dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
-                 "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",
-                 "dcel"};
+    CLI::App app{
+        "dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
+        "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",
+        "dcel"};
     app.set_version_flag("--version", DCEL_VERSION);
     app.require_subcommand(1);
     app.fallthrough(false);

@@ -91,9 +91,7 @@ Pipe make_pipe() {
     }
     return {fds[0], fds[1]};
 }
-void set_nonblocking(int fd) {
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
-}
+void set_nonblocking(int fd) { ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
 struct Child {
     pid_t pid = -1;
@@ -189,8 +187,8 @@ enum class Pump : std::uint8_t { Done, OutputClosed, Deadline, TooMuchOutput };
 // close_in), its stdout into `out`, its stderr into `err` (trimmed), until
 // done() holds, both outputs are closed, the deadline passes, or `out` grows
 // past max_out.
-Pump pump(Child& c, std::string_view& input, bool close_in, std::string& out, std::string& err,
-          Clock::time_point deadline, std::size_t max_out, const std::function<bool()>& done) {
+Pump pump(Child& c, std::string_view& input, bool close_in, std::string& out, std::string& err, Clock::time_point deadline,
+          std::size_t max_out, const std::function<bool()>& done) {
     char buffer[1 << 16];
     for (;;) {
         if (done && done()) return Pump::Done;
@@ -240,8 +238,7 @@ std::string describe_end(const ProcessResult& r, const ProcessLimits& limits) {
         case ProcessEnd::Exited: return "exit status " + std::to_string(r.exit_status);
         case ProcessEnd::Signalled: {
             const char* name = ::strsignal(r.signal);
-            return "killed by signal " + std::to_string(r.signal) +
-                   (name != nullptr ? std::string(" (") + name + ")" : "");
+            return "killed by signal " + std::to_string(r.signal) + (name != nullptr ? std::string(" (") + name + ")" : "");
         }
         case ProcessEnd::TimedOut:
             return "no answer within " + std::to_string(limits.timeout.count()) + " ms (killed with its process group)";

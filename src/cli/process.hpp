@@ -42,8 +42,7 @@ struct ProcessResult {
 
 // Runs COMMAND once with `input` on its stdin (then closed) and waits for it
 // to exit, to time out, or to print too much.
-[[nodiscard]] ProcessResult run_command(const std::string& command, std::string_view input,
-                                        const ProcessLimits& limits);
+[[nodiscard]] ProcessResult run_command(const std::string& command, std::string_view input, const ProcessLimits& limits);
 
 // COMMAND kept running: one line in, one line out, per exchange. Started on
 // the first exchange; after a failure (exit, signal, timeout, a line longer

@@ -33,17 +33,17 @@ public:
     DcelBuilder(const PlanarGraph& g, const BuildOptions& options) : g_(g), options_(options) {}
 
     Dcel run() {
-        check_elements(g_);                                        // O(V + E)
+        check_elements(g_);                                            // O(V + E)
         rg_ = rank_graph_checked(g_, lex_order_checked(g_.vertices));  // O(V + E log d); sort O(V log V) worst
-        find_components();                                         // O((V + E) alpha)
-        find_edges_below();                                        // sweep: O((V + E) log(V + E))
-        link_slots();                                              // O(E), O(E log d) worst
-        find_cycles();                                             // O(E)
-        place_components();                                        // O(V)
-        number_faces();                                            // O(E)
-        write_half_edges();                                        // O(E)
-        write_faces();                                             // O(F + holes log holes)
-        d_.points_ = g_.vertices;                                  // O(V)
+        find_components();                                             // O((V + E) alpha)
+        find_edges_below();                                            // sweep: O((V + E) log(V + E))
+        link_slots();                                                  // O(E), O(E log d) worst
+        find_cycles();                                                 // O(E)
+        place_components();                                            // O(V)
+        number_faces();                                                // O(E)
+        write_half_edges();                                            // O(E)
+        write_faces();                                                 // O(F + holes log holes)
+        d_.points_ = g_.vertices;                                      // O(V)
         return std::move(d_);
     }
 

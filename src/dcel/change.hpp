@@ -61,10 +61,16 @@ struct Change {
 };
 
 template <>
-inline const IdChange<VertexId>& Change::of<VertexId>() const { return vertices; }
+inline const IdChange<VertexId>& Change::of<VertexId>() const {
+    return vertices;
+}
 template <>
-inline const IdChange<EdgeId>& Change::of<EdgeId>() const { return edges; }
+inline const IdChange<EdgeId>& Change::of<EdgeId>() const {
+    return edges;
+}
 template <>
-inline const IdChange<FaceId>& Change::of<FaceId>() const { return faces; }
+inline const IdChange<FaceId>& Change::of<FaceId>() const {
+    return faces;
+}
 
 }  // namespace dcel

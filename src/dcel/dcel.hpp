@@ -110,9 +110,7 @@ public:
     // The half-edges leaving the origin of h, clockwise (next(twin(h))) or
     // counterclockwise (twin(prev(h))). Empty-safe: use only with a non-null h.
     [[nodiscard]] Orbit around_origin_cw(HalfEdgeId h) const { return {*this, h, OrbitStep::ClockwiseAroundOrigin}; }
-    [[nodiscard]] Orbit around_origin_ccw(HalfEdgeId h) const {
-        return {*this, h, OrbitStep::CounterclockwiseAroundOrigin};
-    }
+    [[nodiscard]] Orbit around_origin_ccw(HalfEdgeId h) const { return {*this, h, OrbitStep::CounterclockwiseAroundOrigin}; }
 
     // ---- Whole arrays, read-only (for dumps, validation and bulk queries)
     [[nodiscard]] const std::vector<Point>& points() const { return points_; }
@@ -121,13 +119,13 @@ private:
     friend class DcelBuilder;  // build.cpp fills the arrays
     friend class DcelEditor;   // edit.cpp changes them in place
 
-    std::vector<Point> points_;       // point(v): the coordinates, as given
-    std::vector<HalfEdgeId> out_;     // out(v): origin(out(v)) == v, or null if isolated
-    std::vector<VertexId> origin_;    // origin(h); target(h) = origin(twin(h))
-    std::vector<HalfEdgeId> next_;    // next(h): a permutation; origin(next(h)) == target(h)
-    std::vector<HalfEdgeId> prev_;    // prev(h): the inverse permutation of next
-    std::vector<FaceId> face_;        // face(h): constant along each next-cycle
-    std::vector<FaceRecord> faces_;   // faces_[0] is the unbounded face
+    std::vector<Point> points_;      // point(v): the coordinates, as given
+    std::vector<HalfEdgeId> out_;    // out(v): origin(out(v)) == v, or null if isolated
+    std::vector<VertexId> origin_;   // origin(h); target(h) = origin(twin(h))
+    std::vector<HalfEdgeId> next_;   // next(h): a permutation; origin(next(h)) == target(h)
+    std::vector<HalfEdgeId> prev_;   // prev(h): the inverse permutation of next
+    std::vector<FaceId> face_;       // face(h): constant along each next-cycle
+    std::vector<FaceRecord> faces_;  // faces_[0] is the unbounded face
 };
 
 inline OrbitIterator& OrbitIterator::operator++() {

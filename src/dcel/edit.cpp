@@ -59,7 +59,7 @@ private:
     void set_out(VertexId v, HalfEdgeId h) { d_.out_[v.index()] = h; }
 
     // ---- Growing: each appends at the end of its arrays
-    VertexId append_vertex(Point p);  // no edges, listed in no face yet
+    VertexId append_vertex(Point p);                           // no edges, listed in no face yet
     HalfEdgeId append_edge(VertexId u, VertexId v, FaceId f);  // u->v and v->u, linked to each other
     FaceId append_face(HalfEdgeId outer);
     // Puts x (leaving origin(r)) into the rotation just clockwise of r.
@@ -210,8 +210,8 @@ Change DcelEditor::add_edge(VertexId u, VertexId v) {
     if (!d_.out(u).is_null()) {
         for (const HalfEdgeId h : d_.around_origin_cw(d_.out(u))) {
             if (target(h) == v) {
-                detail::refuse(kEdit, u.str() + " and " + v.str() + " are already joined by edge " +
-                                          detail::describe(d_, edge_of(h)));
+                detail::refuse(
+                    kEdit, u.str() + " and " + v.str() + " are already joined by edge " + detail::describe(d_, edge_of(h)));
             }
         }
     }
@@ -328,9 +328,7 @@ void DcelEditor::move_enclosed(FaceId from, FaceId to, HalfEdgeId boundary, Half
         lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
         hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
     }
-    auto inside = [&](Point p) {
-        return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && encloses(boundary, p);
-    };
+    auto inside = [&](Point p) { return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && encloses(boundary, p); };
     std::vector<HalfEdgeId> holes_kept;
     std::vector<HalfEdgeId> holes_moved;
     for (const HalfEdgeId h : record(from).inner) {

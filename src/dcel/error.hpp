@@ -36,7 +36,7 @@ public:
 
     [[nodiscard]] InputErrorKind kind() const { return kind_; }
     [[nodiscard]] const std::vector<VertexId>& vertices() const { return vertices_; }  // offending vertices
-    [[nodiscard]] const std::vector<EdgeId>& edges() const { return edges_; }           // offending input edges
+    [[nodiscard]] const std::vector<EdgeId>& edges() const { return edges_; }          // offending input edges
 
 private:
     InputErrorKind kind_;

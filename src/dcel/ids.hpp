@@ -37,10 +37,18 @@ private:
     Index index_ = kNoIndex;
 };
 
-struct VertexTag { static constexpr char prefix = 'v'; };
-struct HalfEdgeTag { static constexpr char prefix = 'h'; };
-struct FaceTag { static constexpr char prefix = 'f'; };
-struct EdgeTag { static constexpr char prefix = 'e'; };
+struct VertexTag {
+    static constexpr char prefix = 'v';
+};
+struct HalfEdgeTag {
+    static constexpr char prefix = 'h';
+};
+struct FaceTag {
+    static constexpr char prefix = 'f';
+};
+struct EdgeTag {
+    static constexpr char prefix = 'e';
+};
 
 using VertexId = Id<VertexTag>;
 using HalfEdgeId = Id<HalfEdgeTag>;

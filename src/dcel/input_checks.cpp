@@ -39,8 +39,7 @@ void check_elements(const PlanarGraph& g) {
                 throw InvalidInput(InputErrorKind::BadIndex,
                                    "edge " + std::to_string(k) + ": vertex index " +
                                        (v.is_null() ? std::string("null") : std::to_string(v.index())) +
-                                       " is out of range (there are " + std::to_string(n) +
-                                       " vertices, numbered from 0)",
+                                       " is out of range (there are " + std::to_string(n) + " vertices, numbered from 0)",
                                    {}, {EdgeId(k)});
             }
         }
@@ -53,9 +52,7 @@ void check_elements(const PlanarGraph& g) {
     }
 }
 
-std::vector<VertexId> sort_vertices_checked(const PlanarGraph& g) {
-    return lex_order_checked(g.vertices).vertex_of_rank;
-}
+std::vector<VertexId> sort_vertices_checked(const PlanarGraph& g) { return lex_order_checked(g.vertices).vertex_of_rank; }
 
 Rings sort_rings_checked(const PlanarGraph& g) {
     const auto n = static_cast<Index>(g.vertices.size());

@@ -119,8 +119,7 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
             const VertexId b(sorted[r].id);
             throw InvalidInput(InputErrorKind::DuplicatePoint,
                                "vertices " + std::to_string(a.index()) + " and " + std::to_string(b.index()) +
-                                   " are at the same point " + format_point(sorted[r].p) +
-                                   "; merge them into one vertex",
+                                   " are at the same point " + format_point(sorted[r].p) + "; merge them into one vertex",
                                {a, b});
         }
     }

@@ -83,9 +83,9 @@ private:
     enum class NodeKind : unsigned char { X, Y, Leaf };
     struct Node {
         NodeKind kind = NodeKind::Leaf;
-        Index item = 0;          // X: vertex index; Y: segment; Leaf: trapezoid
-        Index first = kNoIndex;  // X: left child; Y: child above
-        Index second = kNoIndex; // X: right child; Y: child below
+        Index item = 0;           // X: vertex index; Y: segment; Leaf: trapezoid
+        Index first = kNoIndex;   // X: left child; Y: child above
+        Index second = kNoIndex;  // X: right child; Y: child below
     };
 
     [[nodiscard]] Point point(VertexId v) const { return points_[v.index()]; }
@@ -99,12 +99,12 @@ private:
     [[nodiscard]] Index leaf_of(Index trapezoid);
     [[nodiscard]] FaceId face_of(const Trapezoid& t) const;
 
-    std::vector<Point> points_;             // by vertex id
-    std::vector<VertexId> by_position_;     // all vertices in lex order, for vertex hits
+    std::vector<Point> points_;          // by vertex id
+    std::vector<VertexId> by_position_;  // all vertices in lex order, for vertex hits
     std::vector<Segment> segments_;
-    std::vector<Trapezoid> trapezoids_;     // some are dead (replaced); only leaves matter
-    std::vector<Node> nodes_;               // nodes_[0] is the root
-    std::vector<FaceId> face_of_trapezoid_; // filled once the map is complete
+    std::vector<Trapezoid> trapezoids_;      // some are dead (replaced); only leaves matter
+    std::vector<Node> nodes_;                // nodes_[0] is the root
+    std::vector<FaceId> face_of_trapezoid_;  // filled once the map is complete
 };
 
 }  // namespace dcel

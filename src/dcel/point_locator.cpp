@@ -127,8 +127,10 @@ void PointLocator::insert(Index s) {
 
     // The parts left of the left end and right of the right end, unless an
     // existing wall is there already.
-    const Index left_part = first.leftp == seg.left ? kNoIndex : new_trapezoid(first.top, first.bottom, first.leftp, seg.left);
-    const Index right_part = last.rightp == seg.right ? kNoIndex : new_trapezoid(last.top, last.bottom, seg.right, last.rightp);
+    const Index left_part = first.leftp == seg.left ? kNoIndex
+                                                    : new_trapezoid(first.top, first.bottom, first.leftp, seg.left);
+    const Index right_part = last.rightp == seg.right ? kNoIndex
+                                                      : new_trapezoid(last.top, last.bottom, seg.right, last.rightp);
 
     // Above and below the segment: a wall at a crossed trapezoid's right
     // vertex survives only on the side of the segment where that vertex is;

@@ -18,11 +18,11 @@
 namespace dcel {
 
 struct RankGraph {
-    std::vector<Point> point;       // point[r]: the coordinates of the vertex of rank r
-    std::vector<VertexId> vertex;   // vertex[r]: its input id
-    std::vector<Index> offset;      // the ring of r is the slots offset[r] .. offset[r+1]
+    std::vector<Point> point;           // point[r]: the coordinates of the vertex of rank r
+    std::vector<VertexId> vertex;       // vertex[r]: its input id
+    std::vector<Index> offset;          // the ring of r is the slots offset[r] .. offset[r+1]
     std::vector<HalfEdgeId> half_edge;  // half_edge[s]: leaves the ring's vertex; CCW from east
-    std::vector<Index> target;      // target[s]: the rank it goes to
+    std::vector<Index> target;          // target[s]: the rank it goes to
 
     [[nodiscard]] Index num_vertices() const { return static_cast<Index>(vertex.size()); }
     [[nodiscard]] Index num_slots() const { return static_cast<Index>(half_edge.size()); }

@@ -188,8 +188,7 @@ std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
 
 std::size_t first_same_direction(Point centre, std::span<const RingEntry> ring) {
     for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
-        if (ring[i].quadrant == ring[i + 1].quadrant &&
-            orient2d(centre, ring[i].target, ring[i + 1].target) == Sign::Zero) {
+        if (ring[i].quadrant == ring[i + 1].quadrant && orient2d(centre, ring[i].target, ring[i + 1].target) == Sign::Zero) {
             return i;
         }
     }

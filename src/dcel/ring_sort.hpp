@@ -22,9 +22,9 @@
 namespace dcel {
 
 struct RingEntry {
-    Point target;        // where the half-edge goes
+    Point target;  // where the half-edge goes
     HalfEdgeId half_edge;
-    Index payload = 0;   // carried along (build keeps the target's rank here)
+    Index payload = 0;  // carried along (build keeps the target's rank here)
     unsigned char quadrant = 0;
 };
 

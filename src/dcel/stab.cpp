@@ -195,9 +195,8 @@ std::vector<StabPiece> stab_line(const Dcel& d, Point a, Point b, HalfEdgeId cut
     Walk backward(d, b, a, false);
     std::vector<StabPiece> ahead;
     std::vector<StabPiece> behind;
-    const State start = to_int(sc) * to_int(se) < 0
-                            ? State::crossing(edge_of(cut))
-                            : State::vertex_at(sc == Sign::Zero ? d.origin(cut) : d.target(cut), {});
+    const State start = to_int(sc) * to_int(se) < 0 ? State::crossing(edge_of(cut))
+                                                    : State::vertex_at(sc == Sign::Zero ? d.origin(cut) : d.target(cut), {});
     ahead = forward.run(start);
     behind = backward.run(start);
     std::vector<StabPiece> out = reversed_tail(std::move(behind));

@@ -22,10 +22,10 @@ namespace dcel {
 struct StabPiece {
     enum class Kind : unsigned char { Face, Edge, Vertex };
     Kind kind = Kind::Face;
-    FaceId face;        // Face: the open stretch lies inside this face
-    EdgeId edge;        // Edge: crossed at one interior point, or run along
-    VertexId vertex;    // Vertex: passed through (or started or ended at)
-    bool along = false; // Edge: true when the stretch runs along the edge
+    FaceId face;         // Face: the open stretch lies inside this face
+    EdgeId edge;         // Edge: crossed at one interior point, or run along
+    VertexId vertex;     // Vertex: passed through (or started or ended at)
+    bool along = false;  // Edge: true when the stretch runs along the edge
 
     [[nodiscard]] static StabPiece in_face(FaceId f) { return {Kind::Face, f, {}, {}, false}; }
     [[nodiscard]] static StabPiece across(EdgeId e) { return {Kind::Edge, {}, e, {}, false}; }

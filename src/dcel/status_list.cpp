@@ -14,8 +14,11 @@ std::uint64_t mix(std::uint64_t x) {
 }  // namespace
 
 StatusList::StatusList(Index capacity)
-    : head_(capacity), next0_(capacity + std::size_t{1}), prev0_(capacity + std::size_t{1}, kNone),
-      level_(capacity + std::size_t{1}), upper_index_(capacity + std::size_t{1}, 0) {
+    : head_(capacity),
+      next0_(capacity + std::size_t{1}),
+      prev0_(capacity + std::size_t{1}, kNone),
+      level_(capacity + std::size_t{1}),
+      upper_index_(capacity + std::size_t{1}, 0) {
     std::size_t upper_size = 0;
     for (Index i = 0; i < capacity; ++i) {
         std::uint64_t bits = mix(i);

@@ -60,8 +60,8 @@ private:
     void set_next(Index node, int level, Index to);
     void set_prev(Index node, int level, Index to);
 
-    Index head_;                       // the sentinel, node id == capacity
-    std::vector<Index> next0_;         // level 0 links; prev0_ is kNone when not in the list
+    Index head_;                // the sentinel, node id == capacity
+    std::vector<Index> next0_;  // level 0 links; prev0_ is kNone when not in the list
     std::vector<Index> prev0_;
     std::vector<std::uint8_t> level_;  // highest level of each node (0 for 3 nodes in 4)
     std::vector<Index> upper_index_;   // where a node's links for levels >= 1 start in upper_

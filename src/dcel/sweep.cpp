@@ -32,8 +32,7 @@ struct Span {
         if (k == e.index() || (other.u != v && other.v != v)) continue;
         const VertexId w = other.u == v ? other.v : other.u;
         const Point pw = g.vertices[w.index()];
-        if (orient2d(a, b, pw) == Sign::Zero &&
-            segment_contact(a, b, g.vertices[v.index()], pw) == Contact::Overlap) {
+        if (orient2d(a, b, pw) == Sign::Zero && segment_contact(a, b, g.vertices[v.index()], pw) == Contact::Overlap) {
             const EdgeId lo = EdgeId(std::min(k, e.index()));
             const EdgeId hi = EdgeId(std::max(k, e.index()));
             throw InvalidInput(InputErrorKind::Overlap,
@@ -51,7 +50,11 @@ struct Span {
 class Sweep {
 public:
     Sweep(const RankGraph& rg, const PlanarGraph& g, bool check)
-        : rg_(rg), g_(g), check_(check), node_of_slot_(rg.num_slots(), kNoIndex), spans_(g.edges.size()),
+        : rg_(rg),
+          g_(g),
+          check_(check),
+          node_of_slot_(rg.num_slots(), kNoIndex),
+          spans_(g.edges.size()),
           status_(static_cast<Index>(g.edges.size())) {}
 
     // One event per vertex, in rank order: O(degree) list work, plus, when
@@ -66,9 +69,7 @@ private:
     [[nodiscard]] Point left(Index e) const { return rg_.point[spans_[e].left]; }
     [[nodiscard]] Point right(Index e) const { return rg_.point[spans_[e].right]; }
     // Edge e passes below p: p is to the left of e, looking from left to right.
-    [[nodiscard]] bool below_point(Index e, Point p) const {
-        return orient2d(left(e), right(e), p) == Sign::Positive;
-    }
+    [[nodiscard]] bool below_point(Index e, Point p) const { return orient2d(left(e), right(e), p) == Sign::Positive; }
 
     // Where an edge's status node is recorded: in the slot at its right end
     // when that ring is small (found by a scan of it, next door in memory),
@@ -213,10 +214,10 @@ private:
             case Contact::Crossing: {
                 const EdgeId lo = EdgeId(std::min(s, t));
                 const EdgeId hi = EdgeId(std::max(s, t));
-                throw InvalidInput(InputErrorKind::Crossing,
-                                   describe_edge(g_, lo) + " and " + describe_edge(g_, hi) +
-                                       " cross; split both at their crossing point",
-                                   {}, {lo, hi});
+                throw InvalidInput(
+                    InputErrorKind::Crossing,
+                    describe_edge(g_, lo) + " and " + describe_edge(g_, hi) + " cross; split both at their crossing point",
+                    {}, {lo, hi});
             }
             case Contact::Touch:
             case Contact::Overlap: {
@@ -230,8 +231,8 @@ private:
                     }
                 }
                 throw InvalidInput(InputErrorKind::Overlap,
-                                   describe_edge(g_, EdgeId(s)) + " and " + describe_edge(g_, EdgeId(t)) + " overlap",
-                                   {}, {EdgeId(s), EdgeId(t)});
+                                   describe_edge(g_, EdgeId(s)) + " and " + describe_edge(g_, EdgeId(t)) + " overlap", {},
+                                   {EdgeId(s), EdgeId(t)});
             }
         }
     }

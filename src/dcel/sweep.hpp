@@ -44,7 +44,7 @@ struct SweepInput {
 // with wanted[r] set, below[r] becomes the slot of the left-to-right
 // half-edge of the edge below (kNoIndex: nothing below); other entries are
 // left alone. `graph` is the input, used only to word error messages.
-void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted,
-                 std::span<Index> below, bool check_intersections);
+void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted, std::span<Index> below,
+                 bool check_intersections);
 
 }  // namespace dcel

@@ -25,8 +25,8 @@ struct Sizes {
           faces(static_cast<Index>(d.faces.size())) {}
 };
 
-Violation violation(Invariant inv, std::string message, std::vector<VertexId> vs = {},
-                    std::vector<HalfEdgeId> hs = {}, std::vector<FaceId> fs = {}) {
+Violation violation(Invariant inv, std::string message, std::vector<VertexId> vs = {}, std::vector<HalfEdgeId> hs = {},
+                    std::vector<FaceId> fs = {}) {
     return {inv, std::move(message), std::move(vs), std::move(hs), std::move(fs)};
 }
 
@@ -107,8 +107,8 @@ CheckResult check_references(const DcelDump& d) {
     const Sizes n(d);
     if (n.faces == 0) return violation(Invariant::References, "no faces: there must be at least the unbounded face");
     if (!d.vertex_out.empty() && d.vertex_out.size() != d.vertices.size()) {
-        return violation(Invariant::References, "vertex_out has " + std::to_string(d.vertex_out.size()) +
-                                                    " entries for " + std::to_string(n.vertices) + " vertices");
+        return violation(Invariant::References, "vertex_out has " + std::to_string(d.vertex_out.size()) + " entries for " +
+                                                    std::to_string(n.vertices) + " vertices");
     }
     for (Index v = 0; v < d.vertex_out.size(); ++v) {
         const HalfEdgeId h = d.vertex_out[v];
@@ -160,7 +160,9 @@ CheckResult check_twin(const DcelDump& d) {
     for (Index i = 0; i < d.half_edges.size(); ++i) {
         const HalfEdgeId h(i);
         const HalfEdgeId t = d.half_edges[i].twin;
-        if (t == h) return violation(Invariant::Twin, "twin(" + h.str() + ") = " + h.str() + ": a half-edge is its own twin", {}, {h});
+        if (t == h)
+            return violation(Invariant::Twin, "twin(" + h.str() + ") = " + h.str() + ": a half-edge is its own twin", {},
+                             {h});
         const HalfEdgeId back = rec(d, t).twin;
         if (back != h) {
             return violation(Invariant::Twin,
@@ -225,8 +227,7 @@ CheckResult check_vertex_out(const DcelDump& d) {
         if (h.is_null()) {
             if (degree[i] != 0) {
                 return violation(Invariant::VertexOut,
-                                 "out(" + v.str() + ") is null but " + std::to_string(degree[i]) +
-                                     " half-edges leave it",
+                                 "out(" + v.str() + ") is null but " + std::to_string(degree[i]) + " half-edges leave it",
                                  {v});
             }
         } else if (rec(d, h).origin != v) {
@@ -256,8 +257,8 @@ CheckResult check_face_records(const DcelDump& d) {
             }
             if (++named[c] > 1) {
                 return violation(Invariant::FaceRecords,
-                                 cycle_name(cycles.smallest[c]) + " is listed more than once (again by " + f.str() +
-                                     " as " + role + " cycle, via " + h.str() + ")",
+                                 cycle_name(cycles.smallest[c]) + " is listed more than once (again by " + f.str() + " as " +
+                                     role + " cycle, via " + h.str() + ")",
                                  {}, {cycles.smallest[c], h}, {f});
             }
             return {};
@@ -270,10 +271,10 @@ CheckResult check_face_records(const DcelDump& d) {
         }
     }
     if (unbounded.size() != 1) {
-        return violation(Invariant::FaceRecords,
-                         std::to_string(unbounded.size()) +
-                             " faces have no outer cycle; exactly one (the unbounded face) must have none",
-                         {}, {}, unbounded);
+        return violation(
+            Invariant::FaceRecords,
+            std::to_string(unbounded.size()) + " faces have no outer cycle; exactly one (the unbounded face) must have none",
+            {}, {}, unbounded);
     }
     for (Index c = 0; c < named.size(); ++c) {
         if (named[c] == 0) {
@@ -299,10 +300,10 @@ CheckResult check_isolated_vertices(const DcelDump& d) {
                                  {v}, {}, {FaceId(i)});
             }
             if (++listed[v.index()] > 1) {
-                return violation(Invariant::IsolatedVertices,
-                                 "isolated vertex " + v.str() + " is listed more than once (again by f" +
-                                     std::to_string(i) + ")",
-                                 {v}, {}, {FaceId(i)});
+                return violation(
+                    Invariant::IsolatedVertices,
+                    "isolated vertex " + v.str() + " is listed more than once (again by f" + std::to_string(i) + ")", {v},
+                    {}, {FaceId(i)});
             }
         }
     }
@@ -372,8 +373,10 @@ CheckResult check_rotation(const DcelDump& d) {
         }
         if (degree[i] > 1 && wraps != 1) {
             return violation(Invariant::Rotation,
-                             "around " + v.str() + ", next(twin(h)) does not visit the outgoing half-edges in "
-                             "clockwise order (it turns the wrong way " + std::to_string(wraps) + " times)",
+                             "around " + v.str() +
+                                 ", next(twin(h)) does not visit the outgoing half-edges in "
+                                 "clockwise order (it turns the wrong way " +
+                                 std::to_string(wraps) + " times)",
                              {v}, {start});
         }
     }
@@ -476,8 +479,8 @@ CheckResult check_hole_placement(const DcelDump& d) {
             actual = isolated_in[v.index()];
         } else {
             Index k = 0;
-            while (k < degree && angular_half(g.vertices[v.index()],
-                                              g.vertices[graph_target(g, rings.ring[first + k]).index()]) == 0) {
+            while (k < degree &&
+                   angular_half(g.vertices[v.index()], g.vertices[graph_target(g, rings.ring[first + k]).index()]) == 0) {
                 ++k;
             }
             witness = u.to_dump_half_edge[rings.ring[first + (k + degree - 1) % degree].index()];
@@ -487,12 +490,11 @@ CheckResult check_hole_placement(const DcelDump& d) {
             const std::string what = degree == 0 ? "isolated vertex " + v.str()
                                                  : "the component whose leftmost vertex is " + v.str() +
                                                        " (outer boundary through " + witness.str() + ")";
-            return violation(Invariant::HolePlacement,
-                             what + " is placed in " + actual.str() + " but lies in " + expected.str() +
-                                 (e.is_null() ? std::string(" (nothing is below it)")
-                                              : " (the face above the edge below it)"),
-                             {v}, witness.is_null() ? std::vector<HalfEdgeId>{} : std::vector<HalfEdgeId>{witness},
-                             {actual, expected});
+            return violation(
+                Invariant::HolePlacement,
+                what + " is placed in " + actual.str() + " but lies in " + expected.str() +
+                    (e.is_null() ? std::string(" (nothing is below it)") : " (the face above the edge below it)"),
+                {v}, witness.is_null() ? std::vector<HalfEdgeId>{} : std::vector<HalfEdgeId>{witness}, {actual, expected});
         }
     }
     return {};
@@ -502,8 +504,9 @@ namespace {
 
 using Checker = CheckResult (*)(const DcelDump&);
 constexpr Checker kCheckers[] = {
-    check_references,   check_twin,      check_next_prev, check_next_origin,  check_face_on_cycle, check_vertex_out,
-    check_face_records, check_isolated_vertices, check_embedding, check_rotation, check_orientation, check_hole_placement,
+    check_references,    check_twin,       check_next_prev,    check_next_origin,
+    check_face_on_cycle, check_vertex_out, check_face_records, check_isolated_vertices,
+    check_embedding,     check_rotation,   check_orientation,  check_hole_placement,
 };
 
 }  // namespace

@@ -13,9 +13,9 @@
 namespace dcel::props {
 namespace {
 
-using BoostGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS,
-                                         boost::property<boost::vertex_index_t, int>,
-                                         boost::property<boost::edge_index_t, int>>;
+using BoostGraph =
+    boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::property<boost::vertex_index_t, int>,
+                          boost::property<boost::edge_index_t, int>>;
 using BoostEdge = boost::graph_traits<BoostGraph>::edge_descriptor;
 using Embedding = std::vector<std::vector<BoostEdge>>;
 using EmbeddingMap =

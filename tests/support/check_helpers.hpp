@@ -116,8 +116,8 @@ inline HalfEdgeId dump_half_edge(const DcelDump& d, Index u, Index v) {
 }
 
 inline std::size_t count_kind(const check::Report& r, check::DifferenceKind k) {
-    return static_cast<std::size_t>(std::count_if(r.differences.begin(), r.differences.end(),
-                                                  [&](const check::Difference& d) { return d.kind == k; }));
+    return static_cast<std::size_t>(
+        std::count_if(r.differences.begin(), r.differences.end(), [&](const check::Difference& d) { return d.kind == k; }));
 }
 
 inline const check::Difference* find_kind(const check::Report& r, check::DifferenceKind k) {

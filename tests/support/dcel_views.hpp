@@ -18,7 +18,7 @@ namespace dcel::props {
 // The faces of d with every vertex id v replaced by rename[v]; when
 // `reverse` is set, every cycle is also reversed (what mirroring does).
 [[nodiscard]] std::vector<testing::FaceShape> face_shapes_renamed(const Dcel& d, const std::vector<Index>& rename,
-                                                                 bool reverse = false);
+                                                                  bool reverse = false);
 
 // The vertices of the cycle through h, in next order.
 [[nodiscard]] std::vector<Point> cycle_points(const Dcel& d, HalfEdgeId h);

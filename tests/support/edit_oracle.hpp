@@ -30,16 +30,15 @@ struct Step {
     std::uint32_t b = 0;  // picks a second vertex
     int x = 0;            // a point (x, y), or (for a split, x < 3) which point on the edge
     int y = 0;
-    int at = 0;  // for a new point: 0 the point (x, y); 1 vertex b's point; 2 the middle of edge b
+    int at = 0;   // for a new point: 0 the point (x, y); 1 vertex b's point; 2 the middle of edge b
     Point exact;  // when `raw` is set, the point itself, overriding (x, y) (used by the fuzzer)
     bool raw = false;
 };
 
 inline std::ostream& operator<<(std::ostream& os, const Step& s) {
-    static constexpr const char* kNames[] = {"add_vertex",  "add_edge",    "add_edge_to_point", "split_edge",
+    static constexpr const char* kNames[] = {"add_vertex",  "add_edge",      "add_edge_to_point", "split_edge",
                                              "remove_edge", "remove_vertex", "merge_edges"};
-    os << kNames[static_cast<int>(s.op)] << "(a=" << s.a << " b=" << s.b << " x=" << s.x << " y=" << s.y
-       << " at=" << s.at;
+    os << kNames[static_cast<int>(s.op)] << "(a=" << s.a << " b=" << s.b << " x=" << s.x << " y=" << s.y << " at=" << s.at;
     if (s.raw) os << " exact=(" << s.exact.x << ", " << s.exact.y << ")";
     return os << ")";
 }

@@ -55,8 +55,8 @@ struct Defects {
         Index e1, e2;
         Meeting how;
     };
-    std::vector<EdgePair> edge_pairs;                      // e1 < e2, how != None/SharedEndpoint
-    std::vector<std::pair<Index, Index>> vertex_in_edge;   // (vertex, edge)
+    std::vector<EdgePair> edge_pairs;                     // e1 < e2, how != None/SharedEndpoint
+    std::vector<std::pair<Index, Index>> vertex_in_edge;  // (vertex, edge)
     [[nodiscard]] bool empty() const {
         return duplicate_points.empty() && duplicate_edges.empty() && edge_pairs.empty() && vertex_in_edge.empty();
     }

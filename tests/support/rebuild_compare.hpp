@@ -36,19 +36,19 @@ inline std::vector<Index> cycle_ids(const Dcel& d) {
 // How d differs from r, a DCEL that build() made from d's graph (same vertex
 // and edge ids); empty when they are the same up to face numbering.
 inline std::optional<std::string> difference_between(const Dcel& d, const Dcel& r) {
-    if (d.num_vertices() != r.num_vertices() || d.num_half_edges() != r.num_half_edges() ||
-        d.num_faces() != r.num_faces()) {
+    if (d.num_vertices() != r.num_vertices() || d.num_half_edges() != r.num_half_edges() || d.num_faces() != r.num_faces()) {
         return "sizes differ: " + std::to_string(d.num_faces()) + " faces, rebuilt " + std::to_string(r.num_faces());
     }
     for (Index i = 0; i < d.num_half_edges(); ++i) {
         const HalfEdgeId h(i);
         if (d.origin(h) != r.origin(h) || d.next(h) != r.next(h) || d.prev(h) != r.prev(h)) {
-            return "half-edge " + h.str() + ": next " + d.next(h).str() + " prev " + d.prev(h).str() +
-                   ", rebuilt next " + r.next(h).str() + " prev " + r.prev(h).str();
+            return "half-edge " + h.str() + ": next " + d.next(h).str() + " prev " + d.prev(h).str() + ", rebuilt next " +
+                   r.next(h).str() + " prev " + r.prev(h).str();
         }
     }
     for (Index v = 0; v < d.num_vertices(); ++v) {
-        if (d.out(VertexId(v)).is_null() != r.out(VertexId(v)).is_null()) return "out(v" + std::to_string(v) + ") null-ness differs";
+        if (d.out(VertexId(v)).is_null() != r.out(VertexId(v)).is_null())
+            return "out(v" + std::to_string(v) + ") null-ness differs";
     }
     // Faces, matched through the half-edges.
     std::vector<FaceId> to_rebuilt(d.num_faces());
@@ -104,8 +104,7 @@ inline std::optional<std::string> difference_from_rebuild(const Dcel& d) {
 
 // Every array equal: what a refused edit must leave behind.
 inline bool same_dump(const DcelDump& a, const DcelDump& b) {
-    return a.vertices == b.vertices && a.vertex_out == b.vertex_out && a.half_edges == b.half_edges &&
-           a.faces == b.faces;
+    return a.vertices == b.vertices && a.vertex_out == b.vertex_out && a.half_edges == b.half_edges && a.faces == b.faces;
 }
 
 // Everything an edited DCEL must satisfy: validate() accepts it, and it is

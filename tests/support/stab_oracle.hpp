@@ -100,7 +100,8 @@ inline std::string check_walk(const Dcel& d, Point a, Point b, const std::vector
                 if (d.face(h) != p.face && d.face(Dcel::twin(h)) != p.face) return "a face next to an edge it is not beside";
             } else {
                 const std::vector<FaceId> around = faces_around(d, n.vertex);
-                if (std::find(around.begin(), around.end(), p.face) == around.end()) return "a face next to a vertex not on it";
+                if (std::find(around.begin(), around.end(), p.face) == around.end())
+                    return "a face next to a vertex not on it";
             }
         }
     }

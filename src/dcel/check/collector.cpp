@@ -28,10 +28,10 @@ namespace {
 // it; a broken dump explains its cycles; a wrong next names the exact place
 // where a walk goes astray.
 constexpr std::array<DifferenceKind, kKindCount> kOrder{
-    DifferenceKind::UnreadableAnswer, DifferenceKind::VertexCount,        DifferenceKind::WrongPoint,
-    DifferenceKind::BrokenInvariant,  DifferenceKind::NotAnEdge,          DifferenceKind::WrongNext,
-    DifferenceKind::ReversedCycle,    DifferenceKind::MissingCycle,       DifferenceKind::ExtraCycle,
-    DifferenceKind::WrongOuterBoundary, DifferenceKind::WrongHole,        DifferenceKind::WrongIsolatedVertex,
+    DifferenceKind::UnreadableAnswer,   DifferenceKind::VertexCount,  DifferenceKind::WrongPoint,
+    DifferenceKind::BrokenInvariant,    DifferenceKind::NotAnEdge,    DifferenceKind::WrongNext,
+    DifferenceKind::ReversedCycle,      DifferenceKind::MissingCycle, DifferenceKind::ExtraCycle,
+    DifferenceKind::WrongOuterBoundary, DifferenceKind::WrongHole,    DifferenceKind::WrongIsolatedVertex,
 };
 }  // namespace
 

@@ -19,8 +19,8 @@ void compare_points(const Dcel& reference, const DcelDump& answer, detail::Colle
     const std::size_t want = reference.num_vertices();
     const std::size_t got = answer.vertices.size();
     if (want != got) {
-        out.add(DifferenceKind::VertexCount, "the answer has " + std::to_string(got) + " vertices, the graph " +
-                                                 std::to_string(want));
+        out.add(DifferenceKind::VertexCount,
+                "the answer has " + std::to_string(got) + " vertices, the graph " + std::to_string(want));
     }
     for (std::size_t v = 0; v < std::min(want, got); ++v) {  // before validation: no 32-bit count assumed
         const Point p = reference.points()[v];

@@ -86,8 +86,7 @@ struct AnswerHalfEdges {
 };
 
 // Maps cycle i to reference half-edges, or reports why it cannot.
-bool map_cycle(const Reference& ref, const AnswerCycles& answer, std::size_t i, AnswerHalfEdges& hs,
-               Collector& out) {
+bool map_cycle(const Reference& ref, const AnswerCycles& answer, std::size_t i, AnswerHalfEdges& hs, Collector& out) {
     const std::vector<Index>& c = (*answer.cycles)[i];
     const auto vertices = static_cast<Index>(ref.dcel().num_vertices());
     if (c.empty()) {
@@ -242,8 +241,7 @@ CycleMatch match_cycles(const Reference& ref, const AnswerCycles& answer, Collec
         if (!out.wants(DifferenceKind::ExtraCycle)) continue;
         std::string why;
         if (s == CycleStatus::Duplicate) {
-            why = " repeats " + answer.label(m.first_match[m.reference_cycle[i]]) +
-                  ": the reference has this cycle once";
+            why = " repeats " + answer.label(m.first_match[m.reference_cycle[i]]) + ": the reference has this cycle once";
         } else if (reversal_of[i] != kNoIndex) {
             why = " is not a cycle of the reference; walked backwards it is " +
                   cycle_text(ref.cycle_vertices(reversal_of[i])) + ", which the answer already has";

@@ -53,9 +53,9 @@ enum class CycleStatus : std::uint8_t {
 };
 
 struct CycleMatch {
-    std::vector<CycleStatus> status;       // per answer cycle
-    std::vector<Index> reference_cycle;    // per answer cycle: for Matched, Duplicate, Reversed
-    std::vector<Index> first_match;        // per reference cycle: the answer cycle, or kNoIndex
+    std::vector<CycleStatus> status;     // per answer cycle
+    std::vector<Index> reference_cycle;  // per answer cycle: for Matched, Duplicate, Reversed
+    std::vector<Index> first_match;      // per reference cycle: the answer cycle, or kNoIndex
 };
 
 // Reports vertex-count, not-an-edge, wrong-next, reversed, missing and extra

@@ -36,7 +36,12 @@ class FaceComparison {
 public:
     FaceComparison(const Reference& ref, const DcelDump& answer, const DumpCycles& cycles, const CycleMatch& match,
                    Collector& out)
-        : ref_(ref), d_(ref.dcel()), answer_(answer), cycles_(cycles), match_(match), out_(out),
+        : ref_(ref),
+          d_(ref.dcel()),
+          answer_(answer),
+          cycles_(cycles),
+          match_(match),
+          out_(out),
           labels_{&cycles.cycles, cycles.through} {}
 
     void run() {
@@ -180,14 +185,12 @@ private:
             if (want[v] == kNoIndex) {
                 if (got[v] == kNoIndex || !out_.wants(DifferenceKind::WrongIsolatedVertex)) continue;
                 add(DifferenceKind::WrongIsolatedVertex,
-                    name + " has edges in the graph, but the answer lists it as isolated in " + answer_face(got[v]),
-                    {v});
+                    name + " has edges in the graph, but the answer lists it as isolated in " + answer_face(got[v]), {v});
             } else if (got[v] == kNoIndex || (known(got[v]) && face_map_[got[v]] != want[v])) {
                 if (!out_.wants(DifferenceKind::WrongIsolatedVertex)) continue;
                 add(DifferenceKind::WrongIsolatedVertex,
                     "isolated vertex " + name + " lies in " + reference_face(want[v]) + " in the reference, but " +
-                        (got[v] == kNoIndex ? "no answer face lists it"
-                                            : "the answer lists it in " + answer_face(got[v])),
+                        (got[v] == kNoIndex ? "no answer face lists it" : "the answer lists it in " + answer_face(got[v])),
                     {v});
             }
         }
@@ -207,8 +210,8 @@ private:
 
 }  // namespace
 
-void compare_face_records(const Reference& ref, const DcelDump& answer, const DumpCycles& cycles,
-                          const CycleMatch& match, Collector& out) {
+void compare_face_records(const Reference& ref, const DcelDump& answer, const DumpCycles& cycles, const CycleMatch& match,
+                          Collector& out) {
     FaceComparison(ref, answer, cycles, match, out).run();
 }
 

@@ -22,7 +22,7 @@ struct DumpCycles {
 [[nodiscard]] DumpCycles dump_cycles(const DcelDump& d);
 
 // Requires the same, plus `match` from match_cycles over `cycles`.
-void compare_face_records(const Reference& ref, const DcelDump& answer, const DumpCycles& cycles,
-                          const CycleMatch& match, Collector& out);
+void compare_face_records(const Reference& ref, const DcelDump& answer, const DumpCycles& cycles, const CycleMatch& match,
+                          Collector& out);
 
 }  // namespace dcel::check::detail

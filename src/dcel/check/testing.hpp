@@ -64,8 +64,7 @@ struct GraphCase {
 };
 
 inline void showValue(const GraphCase& c, std::ostream& os) {
-    os << "family " << gen::family_name(c.params.family) << ", seed " << c.params.seed << ": "
-       << io::write_graph(c.graph);
+    os << "family " << gen::family_name(c.params.family) << ", seed " << c.params.seed << ": " << io::write_graph(c.graph);
 }
 
 inline rc::Gen<GraphCase> graphs() {
@@ -73,14 +72,18 @@ inline rc::Gen<GraphCase> graphs() {
     const std::vector<gen::Family> families(all.begin(), all.end());
     const rc::Gen<gen::Params> params = rc::gen::withSize([families](int size) {
         return rc::gen::apply(
-            [](gen::Family f, std::uint64_t seed, int n) { return gen::Params{f, seed, static_cast<std::size_t>(n)}; },
+            [](gen::Family f, std::uint64_t seed, int n) {
+                return gen::Params{f, seed, static_cast<std::size_t>(n)};
+            },
             rc::gen::elementOf(families), rc::gen::arbitrary<std::uint64_t>(), rc::gen::inRange(0, size + 4));
     });
     return rc::gen::mapcat(rc::gen::noShrink(params), [](const gen::Params& p) {
         return rc::Gen<GraphCase>([p](const rc::Random&, int) {
             return rc::shrinkable::shrinkRecur(GraphCase{p, gen::generate(p)}, [](const GraphCase& c) {
                 return rc::seq::map(rc::seq::fromContainer(gen::shrink_candidates(c.graph)),
-                                    [params = c.params](PlanarGraph g) { return GraphCase{params, std::move(g)}; });
+                                    [params = c.params](PlanarGraph g) {
+                                        return GraphCase{params, std::move(g)};
+                                    });
             });
         });
     });
@@ -121,12 +124,10 @@ inline Report dump(const Dcel& d, const DcelDump& a) { return compare_dump(d, a)
 }  // namespace testing_detail
 
 // One graph: success, or a failure whose message is the graph and the report.
-[[nodiscard]] inline ::testing::AssertionResult agrees_with_reference(const PlanarGraph& graph,
-                                                                     const FacesAnswer& answer) {
+[[nodiscard]] inline ::testing::AssertionResult agrees_with_reference(const PlanarGraph& graph, const FacesAnswer& answer) {
     return testing_detail::agrees(graph, answer, testing_detail::faces);
 }
-[[nodiscard]] inline ::testing::AssertionResult agrees_with_reference(const PlanarGraph& graph,
-                                                                     const DcelDump& answer) {
+[[nodiscard]] inline ::testing::AssertionResult agrees_with_reference(const PlanarGraph& graph, const DcelDump& answer) {
     return testing_detail::agrees(graph, answer, testing_detail::dump);
 }
 

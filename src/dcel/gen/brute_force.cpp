@@ -17,9 +17,7 @@ bool small_integer(double v) { return std::fabs(v) < 0x1p62 && std::trunc(v) == 
 struct Box {
     double x0, x1, y0, y1;
 };
-Box box(Point a, Point b) {
-    return {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
-}
+Box box(Point a, Point b) { return {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)}; }
 bool boxes_meet(const Box& p, const Box& q) { return p.x0 <= q.x1 && q.x0 <= p.x1 && p.y0 <= q.y1 && q.y0 <= p.y1; }
 
 std::string point_text(Point p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }

@@ -31,8 +31,6 @@ struct Step {
 };
 [[nodiscard]] Step random_direction(Rng& rng);
 
-[[nodiscard]] inline Point at(std::int64_t x, std::int64_t y) {
-    return {static_cast<double>(x), static_cast<double>(y)};
-}
+[[nodiscard]] inline Point at(std::int64_t x, std::int64_t y) { return {static_cast<double>(x), static_cast<double>(y)}; }
 
 }  // namespace dcel::gen::detail

@@ -13,7 +13,7 @@
 namespace dcel::gen::detail {
 
 Step random_direction(Rng& rng) {
-    static const Step kSteps[] = {{1, 0}, {0, 1},  {1, 1},  {1, -1}, {2, 1}, {1, 2},
+    static const Step kSteps[] = {{1, 0},  {0, 1},  {1, 1}, {1, -1}, {2, 1},  {1, 2},
                                   {2, -1}, {1, -3}, {3, 1}, {3, -2}, {-1, 4}, {5, 3}};
     const Step s = kSteps[rng.below(std::size(kSteps))];
     return rng.chance(1, 2) ? s : Step{-s.dx, -s.dy};

@@ -57,8 +57,10 @@ PlanarGraph near_degenerate(Rng& rng, std::size_t n) {
             // x -> (M + x) 2^(k-52) with 2^52 + 2^50 <= M < 2^52 + 2^51 + 2^50:
             // M + x is an integer below 2^53, so every value is exact and the
             // points differ by a few units in the last place of the offset.
-            const std::int64_t mx = (std::int64_t{1} << 52) + (std::int64_t{1} << 50) + rng.between(0, (std::int64_t{1} << 51) - 1);
-            const std::int64_t my = (std::int64_t{1} << 52) + (std::int64_t{1} << 50) + rng.between(0, (std::int64_t{1} << 51) - 1);
+            const std::int64_t mx = (std::int64_t{1} << 52) + (std::int64_t{1} << 50) +
+                                    rng.between(0, (std::int64_t{1} << 51) - 1);
+            const std::int64_t my = (std::int64_t{1} << 52) + (std::int64_t{1} << 50) +
+                                    rng.between(0, (std::int64_t{1} << 51) - 1);
             const int kx = static_cast<int>(rng.between(-30, 60));
             const int ky = static_cast<int>(rng.between(-30, 60));
             for (Point& p : g.vertices) {

@@ -12,13 +12,13 @@ namespace dcel::gen {
 namespace {
 
 constexpr std::array<Family, 10> kFamilies = {
-    Family::RandomSegments, Family::Triangulation, Family::GridWithHoles, Family::NestedPolygons, Family::Tree,
-    Family::Comb,           Family::Star,          Family::CollinearChain, Family::Components,   Family::NearDegenerate,
+    Family::RandomSegments, Family::Triangulation, Family::GridWithHoles,  Family::NestedPolygons, Family::Tree,
+    Family::Comb,           Family::Star,          Family::CollinearChain, Family::Components,     Family::NearDegenerate,
 };
 
 constexpr std::array<std::string_view, 10> kNames = {
-    "random-segments", "triangulation", "grid-with-holes", "nested-polygons", "tree",
-    "comb",            "star",          "collinear-chain", "components",      "near-degenerate",
+    "random-segments", "triangulation", "grid-with-holes", "nested-polygons", "tree", "comb", "star",
+    "collinear-chain", "components",    "near-degenerate",
 };
 
 PlanarGraph by_family(Family f, Rng& rng, std::size_t n) {

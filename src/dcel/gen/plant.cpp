@@ -13,7 +13,7 @@ namespace dcel::gen {
 namespace {
 
 struct Attempt {
-    std::vector<Point> new_points;       // appended as new vertices
+    std::vector<Point> new_points;               // appended as new vertices
     std::vector<std::pair<int, int>> new_edges;  // ids: >= 0 existing vertex, < 0 new point -(i+1)
 };
 
@@ -90,7 +90,6 @@ std::optional<PlanarGraph> try_attempt(const PlanarGraph& g, std::size_t e, cons
     return out;
 }
 
-
 // Candidate segments for each defect around edge ab (a and b are existing
 // vertices ia, ib). Several sizes, since rounding may spoil one.
 std::vector<Attempt> attempts(Defect d, const PlanarGraph& g, std::size_t e, Rng& rng) {
@@ -107,8 +106,8 @@ std::vector<Attempt> attempts(Defect d, const PlanarGraph& g, std::size_t e, Rng
             case Defect::Crossing: {
                 // Through a point near the middle, across the line of e.
                 const Point m = inside ? *inside : Point{a.x * 0.5 + b.x * 0.5, a.y * 0.5 + b.y * 0.5};
-                out.push_back({{{m.x + normal.x * s, m.y + normal.y * s}, {m.x - normal.x * s, m.y - normal.y * s}},
-                               {{-1, -2}}});
+                out.push_back(
+                    {{{m.x + normal.x * s, m.y + normal.y * s}, {m.x - normal.x * s, m.y - normal.y * s}}, {{-1, -2}}});
                 break;
             }
             case Defect::Touch: {
@@ -157,7 +156,8 @@ std::optional<PlanarGraph> plant(const PlanarGraph& g, Defect d, std::uint64_t s
             if (std::optional<PlanarGraph> out = try_attempt(g, order[i], a, d)) {
                 // Put the new edges at a random place among the old ones, so
                 // the defect is not always the last edge.
-                std::vector<GraphEdge> added(out->edges.begin() + static_cast<std::ptrdiff_t>(g.edges.size()), out->edges.end());
+                std::vector<GraphEdge> added(out->edges.begin() + static_cast<std::ptrdiff_t>(g.edges.size()),
+                                             out->edges.end());
                 out->edges.resize(g.edges.size());
                 const auto where = static_cast<std::ptrdiff_t>(rng.below(g.edges.size() + 1));
                 out->edges.insert(out->edges.begin() + where, added.begin(), added.end());

@@ -22,7 +22,8 @@ bool is_integer(double v) { return std::trunc(v) == v; }
 
 std::size_t non_integers(const PlanarGraph& g) {
     std::size_t n = 0;
-    for (const Point& p : g.vertices) n += static_cast<std::size_t>(!is_integer(p.x)) + static_cast<std::size_t>(!is_integer(p.y));
+    for (const Point& p : g.vertices)
+        n += static_cast<std::size_t>(!is_integer(p.x)) + static_cast<std::size_t>(!is_integer(p.y));
     return n;
 }
 
@@ -30,8 +31,8 @@ std::size_t non_integers(const PlanarGraph& g) {
 bool magnitudes_shrank(const PlanarGraph& before, const PlanarGraph& after) {
     bool smaller = false;
     for (std::size_t i = 0; i < before.vertices.size(); ++i) {
-        for (const auto& [x, y] : {std::pair{before.vertices[i].x, after.vertices[i].x},
-                                   std::pair{before.vertices[i].y, after.vertices[i].y}}) {
+        for (const auto& [x, y] :
+             {std::pair{before.vertices[i].x, after.vertices[i].x}, std::pair{before.vertices[i].y, after.vertices[i].y}}) {
             if (std::fabs(y) > std::fabs(x)) return false;
             smaller = smaller || std::fabs(y) < std::fabs(x);
         }
@@ -137,7 +138,8 @@ std::vector<PlanarGraph> shrink_candidates(const PlanarGraph& g) {
     out.emplace_back();  // the empty graph
     // Edges: all of them, then halves, quarters, ..., single edges.
     for (std::size_t chunk = e; chunk >= 1; chunk /= 2) {
-        for (std::size_t begin = 0; begin < e; begin += chunk) out.push_back(without_edges(g, begin, std::min(e, begin + chunk)));
+        for (std::size_t begin = 0; begin < e; begin += chunk)
+            out.push_back(without_edges(g, begin, std::min(e, begin + chunk)));
         if (chunk == 1) break;
     }
     // Vertices: every isolated one at once, then each vertex with its edges.

@@ -45,8 +45,7 @@ std::optional<PlanarGraph> apply(const PlanarGraph& g, Transform t, std::int64_t
                 const Point q{std::ldexp(p.x, k), std::ldexp(p.y, k)};
                 // Exact exactly when scaling back recovers the point (an
                 // underflow loses low bits, an overflow gives infinity).
-                if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::ldexp(q.x, -k) != p.x ||
-                    std::ldexp(q.y, -k) != p.y) {
+                if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::ldexp(q.x, -k) != p.x || std::ldexp(q.y, -k) != p.y) {
                     return std::nullopt;
                 }
                 p = q;

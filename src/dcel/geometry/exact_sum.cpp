@@ -29,7 +29,7 @@ void ExactSum::accumulate(Register& reg, double a, double b) {
     if (da.mantissa == 0 || db.mantissa == 0) return;
     __extension__ typedef unsigned __int128 u128;  // NOLINT(modernize-use-using): __extension__ needs typedef
     const u128 product = static_cast<u128>(da.mantissa) * db.mantissa;  // < 2^106
-    const int position = da.exponent + db.exponent - kLowestExponent;  // >= 28
+    const int position = da.exponent + db.exponent - kLowestExponent;   // >= 28
     const int limb = position / 64;
     const int shift = position % 64;
     // The product shifted by `shift` spans at most three limbs.
@@ -102,7 +102,7 @@ double ExactSum::to_double(int scale) const {
     // result is subnormal (its last bit weighs 2^-1074). Converting head to
     // double and then scaling would round twice in the subnormal range.
     const long exponent = static_cast<long>(top) * 64 - lead + kLowestExponent + scale;  // weight of head's bit 0
-    const long drop = std::max(11L, -1074 - exponent);  // low bits of head that do not fit
+    const long drop = std::max(11L, -1074 - exponent);                                   // low bits of head that do not fit
     if (drop > 64) return c > 0 ? 0.0 : -0.0;  // below 2^-1075, half the least subnormal
     const std::uint64_t kept = drop == 64 ? 0 : head >> drop;
     const std::uint64_t rest = drop == 64 ? head : head & ((std::uint64_t{1} << drop) - 1);

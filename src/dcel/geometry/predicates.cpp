@@ -91,8 +91,8 @@ Sign orient2d_slow(Point a, Point b, Point c) {
     // Stage B: when the four differences are exact, the determinant is
     // detleft + e1 - detright - e2 with FMA-recovered rounding errors e1, e2.
     if (std::isfinite(det) && exact_difference(a.x, c.x, acx) && exact_difference(b.x, c.x, bcx) &&
-        exact_difference(a.y, c.y, acy) && exact_difference(b.y, c.y, bcy) &&
-        product_is_safe(acx, bcy, detleft) && product_is_safe(acy, bcx, detright)) {
+        exact_difference(a.y, c.y, acy) && exact_difference(b.y, c.y, bcy) && product_is_safe(acx, bcy, detleft) &&
+        product_is_safe(acy, bcx, detright)) {
         const double e1 = std::fma(acx, bcy, -detleft);
         const double e2 = std::fma(acy, bcx, -detright);
         return sign_of_sum4(detleft, e1, -detright, -e2);
@@ -100,9 +100,7 @@ Sign orient2d_slow(Point a, Point b, Point c) {
     return orient2d_exact(a, b, c);
 }
 
-int angular_half(Point centre, Point p) {
-    return (p.y > centre.y || (p.y == centre.y && p.x > centre.x)) ? 0 : 1;
-}
+int angular_half(Point centre, Point p) { return (p.y > centre.y || (p.y == centre.y && p.x > centre.x)) ? 0 : 1; }
 
 Sign compare_angle(Point centre, Point a, Point b) {
     const int ha = angular_half(centre, a);
@@ -115,8 +113,7 @@ Sign compare_angle(Point centre, Point a, Point b) {
 
 bool on_segment(Point a, Point b, Point p) {
     if (orient2d(a, b, p) != Sign::Zero) return false;
-    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-           p.y <= std::max(a.y, b.y);
+    return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
 }
 
 }  // namespace dcel

@@ -4,9 +4,7 @@
 
 namespace dcel {
 
-bool strictly_inside_segment(Point a, Point b, Point p) {
-    return !(p == a) && !(p == b) && on_segment(a, b, p);
-}
+bool strictly_inside_segment(Point a, Point b, Point p) { return !(p == a) && !(p == b) && on_segment(a, b, p); }
 
 Contact segment_contact(Point a, Point b, Point c, Point d) {
     const Sign o1 = orient2d(a, b, c);

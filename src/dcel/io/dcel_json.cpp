@@ -23,8 +23,7 @@ constexpr std::string_view kFaceId = "face id";
 constexpr std::string_view kVertexIndex = "vertex index";
 
 [[noreturn]] void too_large(const JsonReader& r, std::uint64_t limit, std::string_view what) {
-    r.fail(InputErrorKind::TooLarge,
-           "more than " + std::to_string(limit) + " " + std::string(what) + ": ids are 32-bit");
+    r.fail(InputErrorKind::TooLarge, "more than " + std::to_string(limit) + " " + std::string(what) + ": ids are 32-bit");
 }
 
 template <class Id>
@@ -204,8 +203,7 @@ std::string write_dump(const DcelDump& dump, DumpStyle style) {
                        [&](std::size_t i) { w.index(dump.vertex_out[i].index()); });
     write_array_member(w, "half_edges", dump.half_edges.size(), style, false,
                        [&](std::size_t i) { write_half_edge(w, dump.half_edges[i]); });
-    write_array_member(w, "faces", dump.faces.size(), style, false,
-                       [&](std::size_t i) { write_face(w, dump.faces[i]); });
+    write_array_member(w, "faces", dump.faces.size(), style, false, [&](std::size_t i) { write_face(w, dump.faces[i]); });
     w.raw(lines ? "\n}\n" : "}\n");
     w.flush();
     return out;

@@ -42,8 +42,8 @@ GraphEdge read_edge(JsonReader& r) {
 }
 
 [[noreturn]] void too_large(const JsonReader& r, std::uint64_t limit, std::string_view what, std::string_view why) {
-    r.fail(InputErrorKind::TooLarge, "more than " + std::to_string(limit) + " " + std::string(what) + ": " +
-                                         std::string(why));
+    r.fail(InputErrorKind::TooLarge,
+           "more than " + std::to_string(limit) + " " + std::string(what) + ": " + std::string(why));
 }
 
 void read_edges(JsonReader& r, std::vector<GraphEdge>& out, const CountLimits& limits) {

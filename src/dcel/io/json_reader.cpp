@@ -354,8 +354,8 @@ void JsonReader::fail_arity(std::string_view expected, std::uint64_t count) cons
 
 void JsonReader::fail_missing_key(std::string_view key, std::string_view form) const {
     const std::string p = path();
-    throw InvalidInput(InputErrorKind::Shape, (p.empty() ? "" : p + ": ") + "missing key " + quoted_key(key) +
-                                                  ": expected " + std::string(form));
+    throw InvalidInput(InputErrorKind::Shape,
+                       (p.empty() ? "" : p + ": ") + "missing key " + quoted_key(key) + ": expected " + std::string(form));
 }
 
 void JsonReader::fail_unexpected(std::size_t offset, std::string_view expected) const {
@@ -395,8 +395,7 @@ void JsonReader::fail_index(std::string_view noun, std::size_t begin, std::size_
     const std::string what = std::string(noun) + " " + shown(tok);
     if (!d.zero && d.negative) fail(InputErrorKind::BadIndex, what + " is negative: ids count from 0");
     if (!d.zero && d.last_exp < 0) fail(InputErrorKind::BadIndex, what + " is not an integer");
-    fail(InputErrorKind::BadIndex,
-         what + " is too large: ids are 32-bit, the largest is " + std::to_string(kMaxIndex));
+    fail(InputErrorKind::BadIndex, what + " is too large: ids are 32-bit, the largest is " + std::to_string(kMaxIndex));
 }
 
 // ---------------------------------------------------------------- scanning
@@ -596,7 +595,8 @@ bool JsonReader::next_member() {
     if (pos_ >= text_.size()) fail_unexpected(pos_, "a key in double quotes");
     if (text_[pos_] != '"') {
         if (text_[pos_] == '\'') fail_syntax(pos_, "unexpected single quote: JSON keys are written in double quotes");
-        if (is_alpha(text_[pos_])) fail_syntax(pos_, "unexpected " + describe_char(text_, pos_) + ": JSON keys must be in double quotes");
+        if (is_alpha(text_[pos_]))
+            fail_syntax(pos_, "unexpected " + describe_char(text_, pos_) + ": JSON keys must be in double quotes");
         fail_unexpected(pos_, "a key in double quotes");
     }
     bool escaped = false;

@@ -175,8 +175,8 @@ private:
     static constexpr bool is_digit(char c) { return c >= '0' && c <= '9'; }
     // Characters that cannot directly follow a number or a literal.
     static constexpr bool is_word_char(char c) {
-        return is_digit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == '.' ||
-               c == '+' || c == '-';
+        return is_digit(c) || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_' || c == '.' || c == '+' ||
+               c == '-';
     }
 
     DCEL_JSON_HOT void skip_whitespace() {

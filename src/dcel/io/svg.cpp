@@ -12,9 +12,9 @@ constexpr double kDrawing = 640;  // px along the longer side of the points' box
 constexpr double kMargin = 36;
 constexpr double kTitleBand = 30;
 constexpr double kCaptionBand = 40;
-constexpr double kMinWidth = 360;  // room for the caption under thin drawings
-constexpr double kOffset = 4.5;    // a half-edge's distance from its edge, to its face's side
-constexpr double kHead = 9;        // arrowhead length
+constexpr double kMinWidth = 360;         // room for the caption under thin drawings
+constexpr double kOffset = 4.5;           // a half-edge's distance from its edge, to its face's side
+constexpr double kHead = 9;               // arrowhead length
 constexpr std::size_t kMaxLabels = 2000;  // beyond this, ids are unreadable anyway
 
 struct Xy {
@@ -31,7 +31,7 @@ public:
         if (points.empty()) return;
         if (!bounds(points, 1.0)) (void)bounds(points, 0.25);
         span_ = std::max(dx_, dy_);
-        if (!(span_ > 0)) span_ = 1;  // one point, or all at one point
+        if (!(span_ > 0)) span_ = 1;    // one point, or all at one point
         w_ = kDrawing * (dx_ / span_);  // the ratio first: 640 * 1e308 overflows
         h_ = kDrawing * (dy_ / span_);
     }
@@ -93,12 +93,25 @@ std::string hsl(double hue, double saturation, double lightness) {
     const double h = hue / 60;
     const double x = c * (1 - std::fabs(std::fmod(h, 2.0) - 1));
     double r = 0, g = 0, b = 0;
-    if (h < 1) { r = c; g = x; }
-    else if (h < 2) { r = x; g = c; }
-    else if (h < 3) { g = c; b = x; }
-    else if (h < 4) { g = x; b = c; }
-    else if (h < 5) { r = x; b = c; }
-    else { r = c; b = x; }
+    if (h < 1) {
+        r = c;
+        g = x;
+    } else if (h < 2) {
+        r = x;
+        g = c;
+    } else if (h < 3) {
+        g = c;
+        b = x;
+    } else if (h < 4) {
+        g = x;
+        b = c;
+    } else if (h < 5) {
+        r = x;
+        b = c;
+    } else {
+        r = c;
+        b = x;
+    }
     const double m = lightness - c / 2;
     char buf[8];
     std::snprintf(buf, sizeof buf, "#%02x%02x%02x", static_cast<unsigned>(std::lround((r + m) * 255)),
@@ -126,8 +139,8 @@ void arrow(std::string& out, Xy a, Xy b, const std::string& colour, double width
     const double half = head * 0.45;
     out += "<path d=\"M" + num(s.x) + " " + num(s.y) + "L" + num(base.x) + " " + num(base.y) + "\" stroke=\"" + colour +
            "\" stroke-width=\"" + num(width) + "\" fill=\"none\"/>";
-    out += "<path d=\"M" + num(e.x) + " " + num(e.y) + "L" + num(base.x + uy * half) + " " + num(base.y - ux * half) +
-           "L" + num(base.x - uy * half) + " " + num(base.y + ux * half) + "Z\" fill=\"" + colour + "\"/>\n";
+    out += "<path d=\"M" + num(e.x) + " " + num(e.y) + "L" + num(base.x + uy * half) + " " + num(base.y - ux * half) + "L" +
+           num(base.x - uy * half) + " " + num(base.y + ux * half) + "Z\" fill=\"" + colour + "\"/>\n";
 }
 
 void cycle_path(std::string& out, const Dcel& d, const Frame& frame, HalfEdgeId start) {
@@ -161,8 +174,8 @@ void draw_edges(std::string& out, const Dcel& d, const Frame& frame) {
     out += "</g>\n<g id=\"half-edges\">\n";
     for (Index h = 0; h < d.num_half_edges(); ++h) {
         const HalfEdgeId he(h);
-        arrow(out, frame.at(d.point(d.origin(he))), frame.at(d.point(d.target(he))),
-              face_ink(d.face(he).index()), 1.3, kOffset);
+        arrow(out, frame.at(d.point(d.origin(he))), frame.at(d.point(d.target(he))), face_ink(d.face(he).index()), 1.3,
+              kOffset);
     }
     out += "</g>\n";
 }
@@ -178,8 +191,8 @@ void draw_highlights(std::string& out, const Dcel& d, const Frame& frame, const 
             if (u >= vertices) continue;
             const Xy a = frame.at(d.point(VertexId(u)));
             if (u == v || v >= vertices) {  // a lone or unknown step: ring the vertex
-                out += "<circle cx=\"" + num(a.x) + "\" cy=\"" + num(a.y) + "\" r=\"9\" fill=\"none\" stroke=\"" +
-                       kWarning + "\" stroke-width=\"2.5\"/>\n";
+                out += "<circle cx=\"" + num(a.x) + "\" cy=\"" + num(a.y) + "\" r=\"9\" fill=\"none\" stroke=\"" + kWarning +
+                       "\" stroke-width=\"2.5\"/>\n";
                 continue;
             }
             arrow(out, a, frame.at(d.point(VertexId(v))), kWarning, 3, 2 * kOffset);  // beside the face's own arrows
@@ -193,12 +206,14 @@ void draw_vertices(std::string& out, const Dcel& d, const Frame& frame) {
     for (Index v = 0; v < d.num_vertices(); ++v) {
         const Xy p = frame.at(d.point(VertexId(v)));
         const bool isolated = d.out(VertexId(v)).is_null();
-        out += "<circle cx=\"" + num(p.x) + "\" cy=\"" + num(p.y) + (isolated ? "\" r=\"4\" fill=\"#ffffff\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n"
-                                                                                : "\" r=\"2.8\" fill=\"#000000\"/>\n");
+        out += "<circle cx=\"" + num(p.x) + "\" cy=\"" + num(p.y) +
+               (isolated ? "\" r=\"4\" fill=\"#ffffff\" stroke=\"#000000\" stroke-width=\"1.5\"/>\n"
+                         : "\" r=\"2.8\" fill=\"#000000\"/>\n");
     }
     if (d.num_vertices() <= kMaxLabels) {
-        out += "<g font-family=\"sans-serif\" font-size=\"12\" fill=\"#000000\" stroke=\"#ffffff\" "
-               "stroke-width=\"3\" paint-order=\"stroke\" stroke-linejoin=\"round\">\n";
+        out +=
+            "<g font-family=\"sans-serif\" font-size=\"12\" fill=\"#000000\" stroke=\"#ffffff\" "
+            "stroke-width=\"3\" paint-order=\"stroke\" stroke-linejoin=\"round\">\n";
         for (Index v = 0; v < d.num_vertices(); ++v) {
             const Xy p = frame.at(d.point(VertexId(v)));
             out += "<text x=\"" + num(p.x + 5) + "\" y=\"" + num(p.y - 5) + "\">" + std::to_string(v) + "</text>\n";
@@ -219,8 +234,8 @@ std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
     const double w = frame.width(), h = frame.height();
     std::string out;
     out.reserve(1024 + dcel.num_half_edges() * 200 + dcel.num_vertices() * 120);
-    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(w) + "\" height=\"" + num(h) +
-           "\" viewBox=\"0 0 " + num(w) + " " + num(h) + "\">\n";
+    out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(w) + "\" height=\"" + num(h) + "\" viewBox=\"0 0 " +
+           num(w) + " " + num(h) + "\">\n";
     out += "<title>" + escape(options.title) + "</title>\n";
     out += "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
     draw_faces(out, dcel, frame);

@@ -18,7 +18,7 @@
 namespace dcel::io {
 
 struct SvgOptions {
-    std::string title;                                // shown on top and as <title>; escaped
+    std::string title;                                 // shown on top and as <title>; escaped
     std::vector<std::vector<Index>> highlight_cycles;  // vertex cycles in a warning colour; bad ids skipped
 };
 
