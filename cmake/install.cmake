@@ -15,15 +15,15 @@ include(CMakePackageConfigHelpers)
 set(dcel_install_targets
   dcel        # dcel::dcel
   dcel_gen    # dcel::gen
-  dcel_check  # dcel::check, the in-process checking helpers, if they are a library
+  dcel_check_testing  # dcel::check_testing, the header-only GoogleTest/RapidCheck helpers
   dcel_cli    # dcel::cli, the command-line tool
 )
 set_target_properties(dcel PROPERTIES EXPORT_NAME dcel)
 if(TARGET dcel_gen)
   set_target_properties(dcel_gen PROPERTIES EXPORT_NAME gen)
 endif()
-if(TARGET dcel_check)
-  set_target_properties(dcel_check PROPERTIES EXPORT_NAME check)
+if(TARGET dcel_check_testing)
+  set_target_properties(dcel_check_testing PROPERTIES EXPORT_NAME check_testing)
 endif()
 if(TARGET dcel_cli)
   set_target_properties(dcel_cli PROPERTIES EXPORT_NAME cli)
