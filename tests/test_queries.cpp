@@ -1,6 +1,7 @@
-// Small read-side helpers that the larger suites do not reach: cycle_area(),
-// neighbours(), printing a Location, ExactSum::add/subtract, and the names of
-// the input error kinds. Expected values are worked out by hand on a 4x4
+// Code that the larger suites did not reach (found by scripts/coverage):
+// cycle_area(), neighbours(), printing a Location, ExactSum::add/subtract,
+// the names of the input error kinds, and an edge between two vertices of
+// large degree. Expected values are worked out by hand, mostly on a 4x4
 // square with the diagonal from (0,0) to (4,4) and a small triangle
 // (3,1), (3.5,1), (3.5,1.5) inside its lower-right half.
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include "dcel/geometry/exact_sum.hpp"
 #include "dcel/locate.hpp"
 #include "dcel/queries.hpp"
+#include "dcel/validate.hpp"
 
 namespace dcel {
 namespace {
@@ -117,6 +119,36 @@ TEST(InputErrorKind, EveryKindHasItsOwnName) {
     EXPECT_EQ(seen.size(), names.size());
     // A value outside the enumerators (valid for an enum class over int).
     EXPECT_EQ(std::string(to_string(static_cast<InputErrorKind>(99))), "unknown");
+}
+
+// An edge between two rings larger than RankGraph::kSmallRing (16) is the one
+// case where build() finds a twin's slot by binary search. Hub A = (0,0) has
+// 20 spokes to (k, -1) and hub B = (100,0) 20 spokes to (100 + k, 1), for
+// k = -10..9, so each has degree 21; edge 0 joins them. A tree: one face.
+TEST(BuildHubs, EdgeBetweenTwoLargeRings) {
+    PlanarGraph g;
+    g.vertices = {{0, 0}, {100, 0}};
+    g.edges.push_back({VertexId(0), VertexId(1)});
+    for (int hub = 1; hub >= 0; --hub) {  // B's spokes are edges 1..20, A's 21..40
+        for (int k = -10; k <= 9; ++k) {
+            g.vertices.push_back(hub == 1 ? Point{100.0 + k, 1} : Point{static_cast<double>(k), -1});
+            g.edges.push_back({VertexId(static_cast<Index>(hub)), VertexId(static_cast<Index>(g.vertices.size() - 1))});
+        }
+    }
+    const Dcel d = build(g);
+    EXPECT_FALSE(validate(d).has_value());
+    EXPECT_EQ(d.num_faces(), 1U);
+    EXPECT_EQ(count_components(d), 1U);
+    // next(A->B) leaves B just clockwise of west: B's spoke with the largest
+    // angle below 180 degrees, to (90, 1) (k = -10): edge 1, half-edge 2.
+    EXPECT_EQ(d.next(HalfEdgeId(0)), HalfEdgeId(2));
+    // next(B->A) leaves A just clockwise of east: A's spoke with the largest
+    // angle below 0, to (9, -1) (k = 9): edge 40, half-edge 80.
+    EXPECT_EQ(d.next(HalfEdgeId(1)), HalfEdgeId(80));
+    // The one boundary walk goes along every edge twice.
+    std::size_t length = 0;
+    for ([[maybe_unused]] const HalfEdgeId h : d.cycle(HalfEdgeId(0))) ++length;
+    EXPECT_EQ(length, 2 * g.edges.size());
 }
 
 }  // namespace
