@@ -33,6 +33,8 @@ void close_fd(int& fd) {
 // The process groups alive now (a one-shot run and a stream at most), so
 // that Ctrl-C or a kill of dcel does not leave a hanging command behind: the
 // children have their own group, which the terminal's SIGINT does not reach.
+// Mutable and global because the signal handler reads it.
+// NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables)
 volatile std::sig_atomic_t live_groups[4] = {0, 0, 0, 0};
 
 void remember_group(pid_t pid) {
@@ -287,7 +289,7 @@ StreamProcess::Reply StreamProcess::exchange(std::string_view line) {
     std::string err;
     // The next non-blank line in pending_, taken out of it.
     auto take_line = [&] {
-        for (std::size_t nl; (nl = pending_.find('\n')) != std::string::npos;) {
+        for (std::size_t nl = pending_.find('\n'); nl != std::string::npos; nl = pending_.find('\n')) {
             std::string candidate = pending_.substr(0, nl);
             pending_.erase(0, nl + 1);
             if (candidate.find_first_not_of(" \t\r") != std::string::npos) {
@@ -313,6 +315,18 @@ StreamProcess::Reply StreamProcess::exchange(std::string_view line) {
     pid_ = in_ = out_ = err_ = -1;
     pending_.clear();
     return reply;
+}
+
+// Draining the pipes in stop() allocates; if that fails, the process group
+// is still killed and reaped, without the drain.
+StreamProcess::~StreamProcess() {
+    try {
+        stop();
+    } catch (...) {
+        Child c{pid_, in_, out_, err_};
+        ProcessResult ignored;
+        if (c.pid >= 0) finish(c, ignored, true);
+    }
 }
 
 void StreamProcess::stop() {

@@ -52,7 +52,7 @@ public:
     StreamProcess(std::string command, ProcessLimits limits) : command_(std::move(command)), limits_(limits) {}
     StreamProcess(const StreamProcess&) = delete;
     StreamProcess& operator=(const StreamProcess&) = delete;
-    ~StreamProcess() { stop(); }
+    ~StreamProcess();
 
     struct Reply {
         bool answered = false;  // line holds the answer (without its '\n')
