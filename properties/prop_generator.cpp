@@ -112,9 +112,8 @@ RC_GTEST_PROP(Generator, prop_generation_is_deterministic, ()) {
     // must not see the null data() of an empty vector, even for 0 bytes, and
     // inside RC_ASSERT `||` is captured as an overloaded operator that does
     // not short-circuit (UBSan caught that), so the test is done outside it.
-    const bool same_bits =
-        first.vertices.empty() ||
-        std::memcmp(again.vertices.data(), first.vertices.data(), first.vertices.size() * sizeof(Point)) == 0;
+    const bool same_bits = first.vertices.empty() || std::memcmp(again.vertices.data(), first.vertices.data(),
+                                                                 first.vertices.size() * sizeof(Point)) == 0;
     RC_ASSERT(same_bits);
 }
 

@@ -57,8 +57,7 @@ namespace {
 // passes outside it), which is where the children go.
 // Recursive on purpose: the depth is at most log4 of the radius.
 // NOLINTNEXTLINE(misc-no-recursion)
-void nest(GraphBuilder& b, Rng& rng, std::int64_t cx, std::int64_t cy, std::int64_t r,
-          std::size_t n) {
+void nest(GraphBuilder& b, Rng& rng, std::int64_t cx, std::int64_t cy, std::int64_t r, std::size_t n) {
     static const Step kEight[] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
     static const Step kFour[] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     const bool eight = rng.chance(2, 3);
