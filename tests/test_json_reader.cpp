@@ -143,6 +143,40 @@ TEST(JsonReader, PathsQuoteKeysThatAreNotIdentifiers) {
     EXPECT_EQ(r.path(2), R"(["a b"][0])");
 }
 
+TEST(JsonReader, PathsEscapeQuotesAndControlCharactersInKeys) {
+    // The key is a"b<U+0001>c<DEL>: shown as JSON would spell it.
+    JsonReader r("{\"a\\\"b\\u0001c\x7f\": [7]}");
+    r.begin_object("o");
+    ASSERT_TRUE(r.next_member());
+    r.begin_array("a");
+    ASSERT_TRUE(r.next_element());
+    EXPECT_EQ(r.path(), "[\"a\\\"b\\u0001c\\u007F\"][0]");  // JSON allows either case of hex digit
+}
+
+TEST(JsonReader, TypeErrorsNameWhatWasFound) {
+    expect_input_error([] { static_cast<void>(read_graph(R"({"vertices": false, "edges": []})")); }, InputErrorKind::Shape,
+                       "vertices: expected an array of points [[x, y], ...], found false");
+    expect_input_error([] { static_cast<void>(read_graph(R"({"vertices": true, "edges": []})")); }, InputErrorKind::Shape,
+                       "found true");
+    expect_input_error([] { static_cast<void>(read_graph(R"({"vertices": null, "edges": []})")); }, InputErrorKind::Shape,
+                       "found null");
+}
+
+TEST(JsonWriter, PiecesLargerThanItsBufferGoStraightThrough) {
+    // The buffer holds 16 KiB: a 40000-byte piece between two short ones must
+    // come out whole and in order.
+    std::string out;
+    const std::string big(40000, 'x');
+    {
+        JsonWriter w(out);
+        w.raw("[\"");
+        w.raw(std::string_view(big));
+        w.raw("\"]");
+        w.flush();
+    }
+    EXPECT_EQ(out, "[\"" + big + "\"]");
+}
+
 TEST(JsonReader, RawUtf8InStringsIsAccepted) {
     // 2-, 3- and 4-byte sequences at the edges of the valid ranges.
     JsonReader r("[\"\xC2\x80 \xDF\xBF \xE0\xA0\x80 \xED\x9F\xBF \xEE\x80\x80 \xF0\x90\x80\x80 \xF4\x8F\xBF\xBF\"]");
@@ -305,6 +339,12 @@ TEST(JsonSyntax, Strings) {
     expect_syntax(
         "{\"vertices\": [], \"edges\": [], \"ab\n\": 1}",
         "line 1, column 34: control character U+000A in a string: escape it as \\n (or is a closing '\"' missing?)");
+    expect_syntax("{\"vertices\": [], \"edges\": [], \"a\rb\": 1}",
+                  "line 1, column 33: control character U+000D in a string: escape it as \\r");
+    expect_syntax("{\"vertices\": [], \"edges\": [], \"a\bb\": 1}",
+                  "line 1, column 33: control character U+0008 in a string: escape it as \\b");
+    expect_syntax("{\"vertices\": [], \"edges\": [], \"a\fb\": 1}",
+                  "line 1, column 33: control character U+000C in a string: escape it as \\f");
     expect_syntax(std::string("{\"vertices\": [], \"edges\": [], \"a\0\": 1}", 38),
                   "line 1, column 33: control character U+0000 in a string: escape it as \\u0000");
     expect_syntax(R"({"vertices": [], "edges": [], "abc)",

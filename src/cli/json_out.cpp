@@ -1,31 +1,8 @@
 #include "json_out.hpp"
 
-#include <cstdio>
-
 #include "dcel/io/json_reader.hpp"
 
 namespace dcel::cli {
-
-std::string json_string(std::string_view s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(c));
-                    out += buf;
-                } else {
-                    out += c;  // UTF-8 passes through
-                }
-        }
-    }
-    return out + "\"";
-}
 
 std::string json_point(Point p) {
     std::string out;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dcel/dcel.hpp"
+#include "dcel/io/json_string.hpp"
 #include "dcel/locate.hpp"
 #include "dcel/stab.hpp"
 #include "dcel/user_data.hpp"
@@ -16,7 +17,7 @@ namespace dcel::cli {
 // Face names for the output; an empty name is written as null.
 using FaceNames = FaceData<std::string>;
 
-[[nodiscard]] std::string json_string(std::string_view s);              // quoted and escaped
+using io::json_string;                                                  // quoted and escaped
 [[nodiscard]] std::string json_point(Point p);                          // [x, y], shortest round trip
 [[nodiscard]] std::string json_name(const FaceNames* names, FaceId f);  // "West" or null
 

@@ -2,6 +2,9 @@
 // Exit codes: 0 success, 1 invalid input or a difference found, 2 usage error.
 #include <cstdio>
 #include <new>
+#include <string>
+#include <string_view>
+#include <utility>
 
 #include "commands.hpp"
 #include "dcel/error.hpp"
@@ -27,6 +30,22 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     add_render_command(app, action);
     add_diff_command(app, action);
 
+    // CLI11 answers "A subcommand is required" to a misspelt command; name it
+    // and list the commands instead.
+    if (argc > 1 && argv[1][0] != '-') {
+        const std::string_view word = argv[1];
+        std::string names;
+        bool known = false;
+        for (const CLI::App* sub : std::as_const(app).get_subcommands({})) {
+            known = known || sub->get_name() == word;
+            names += (names.empty() ? "" : ", ") + sub->get_name();
+        }
+        if (!known) {
+            std::fprintf(stderr, "dcel: unknown command \"%s\"; the commands are %s (dcel --help)\n", argv[1],
+                         names.c_str());
+            return kExitUsage;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

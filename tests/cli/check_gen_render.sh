@@ -7,25 +7,7 @@ set -u
 dcel=$1
 data=$2
 section=$3
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-failures=0
-
-# expect NAME CODE REGEX: runs the command in $tmp/cmd (sh), stdout and stderr
-# together, and checks the exit code and that the output matches REGEX.
-expect() {
-    name=$1 code=$2 regex=$3
-    sh "$tmp/cmd" >"$tmp/out" 2>&1
-    got=$?
-    if [ "$got" -ne "$code" ] || ! grep -Eq -- "$regex" "$tmp/out"; then
-        echo "FAIL $name: exit $got (want $code), output (want /$regex/):"
-        sed 's/^/    /' "$tmp/out" | head -20
-        failures=$((failures + 1))
-    else
-        echo "ok   $name"
-    fi
-}
-run() { printf '%s\n' "$1" >"$tmp/cmd"; }
+. "$(dirname "$0")/lib.sh"
 
 g="$data/square_hole.json"
 t="$data/triangle.json"
@@ -116,4 +98,4 @@ render)
     ;;
 esac
 
-[ "$failures" -eq 0 ] || { echo "$failures failed"; exit 1; }
+finish

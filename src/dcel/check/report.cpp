@@ -1,31 +1,12 @@
 #include "dcel/check/report.hpp"
 
-#include <cstdio>
+#include "dcel/io/json_string.hpp"
 
 namespace dcel::check {
 
 namespace {
 
-std::string json_string(std::string_view s) {
-    std::string out = "\"";
-    for (const char c : s) {
-        switch (c) {
-            case '"': out += "\\\""; break;
-            case '\\': out += "\\\\"; break;
-            case '\n': out += "\\n"; break;
-            case '\t': out += "\\t"; break;
-            default:
-                if (static_cast<unsigned char>(c) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-                    out += buf;
-                } else {
-                    out += c;
-                }
-        }
-    }
-    return out + "\"";
-}
+using io::json_string;
 
 std::size_t total(const Report& r) { return r.differences.size() + r.unlisted; }
 

@@ -400,6 +400,7 @@ void JsonReader::fail_index(std::string_view noun, std::size_t begin, std::size_
 
 // ---------------------------------------------------------------- scanning
 
+// The rest of peek(): the end of input, the literals, and anything else.
 JsonType JsonReader::peek_slow() {
     skip_whitespace();
     if (pos_ >= text_.size()) {
@@ -413,21 +414,8 @@ JsonType JsonReader::peek_slow() {
         }
         fail_bad_word(pos_);
     };
+    // peek() has already answered for '[', '{', '"', '-' and digits.
     switch (text_[pos_]) {
-        case '[': return JsonType::Array;
-        case '{': return JsonType::Object;
-        case '"': return JsonType::String;
-        case '-':
-        case '0':
-        case '1':
-        case '2':
-        case '3':
-        case '4':
-        case '5':
-        case '6':
-        case '7':
-        case '8':
-        case '9': return JsonType::Number;
         case 't': return literal("true", JsonType::True);
         case 'f': return literal("false", JsonType::False);
         case 'n': return literal("null", JsonType::Null);

@@ -143,10 +143,8 @@ public:
     // empty at the top level. path(n) uses only the outermost n levels.
     [[nodiscard]] std::string path() const { return path(depth_); }
     [[nodiscard]] std::string path(std::size_t levels) const;
-    [[nodiscard]] std::size_t depth() const { return depth_; }
     // "line L, column C" of a byte offset into the text (after the BOM).
     [[nodiscard]] std::string location(std::size_t offset) const;
-    [[nodiscard]] std::size_t offset() const { return pos_; }
 
     // Throws InvalidInput(kind, "<path>: <message>"), "top level" for the empty path.
     [[noreturn]] void fail(InputErrorKind kind, std::string_view message) const;
