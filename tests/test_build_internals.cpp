@@ -94,6 +94,26 @@ TEST(LexOrder, MatchesStdSortOnSpreadAndClusteredPoints) {
     }
 }
 
+TEST(LexOrder, InputAlreadyInOrderAndAlmostInOrder) {
+    // Strictly increasing input takes a shortcut (the identity); one step
+    // that is not strictly increasing (an equal point, -0.0 next to 0.0, or
+    // one pair swapped) must not.
+    std::vector<Point> pts;
+    for (int i = 0; i < 100; ++i) pts.push_back({static_cast<double>(i / 3), static_cast<double>(i % 3)});
+    expect_lex_order_matches(pts);
+    for (const std::size_t k : {std::size_t{1}, std::size_t{50}, std::size_t{99}}) {
+        std::vector<Point> dup = pts;
+        dup[k] = dup[k - 1];
+        expect_lex_order_matches(dup);
+        std::vector<Point> swapped = pts;
+        std::swap(swapped[k], swapped[k - 1]);
+        expect_lex_order_matches(swapped);
+    }
+    expect_lex_order_matches({{-1, 0}, {-0.0, 0}, {0.0, 0}, {1, 0}});
+    expect_lex_order_matches({{-1, 0}, {0.0, -1}, {-0.0, 0}, {1, 0}});
+    expect_lex_order_matches({{5, 5}});
+}
+
 TEST(LexOrder, AllOnOneVerticalLineAndSignedZeros) {
     std::vector<Point> pts;
     for (int i = 0; i < 1000; ++i) pts.push_back({0.0, static_cast<double>((i * 7919) % 1000)});

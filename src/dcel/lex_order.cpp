@@ -98,6 +98,19 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
     out.rank_of_vertex.resize(n);
     if (n == 0) return out;
 
+    // Points that come already in strictly increasing order (a chain or a
+    // polyline generated left to right) are their own sweep order, and
+    // strictly increasing means no two are equal: one pass of lex_less.
+    Index sorted_prefix = 1;
+    while (sorted_prefix < n && lex_less(points[sorted_prefix - 1], points[sorted_prefix])) ++sorted_prefix;
+    if (sorted_prefix == n) {
+        for (Index v = 0; v < n; ++v) {
+            out.vertex_of_rank[v] = VertexId(v);
+            out.rank_of_vertex[v] = v;
+        }
+        return out;
+    }
+
     std::vector<Keyed> scratch(n);
     for (Index v = 0; v < n; ++v) scratch[v] = Keyed{points[v], v};
     std::vector<Keyed> sorted(n);
