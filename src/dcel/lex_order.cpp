@@ -64,13 +64,16 @@ std::vector<Index> distribute(const Keyed* first, const Keyed* last, Keyed* out,
 }
 
 // Sorts one bucket of the x pass. Most hold a couple of points; a large one
-// whose points share one x (a grid's column, a vertical chain) is bucketed
+// already in order (the x pass keeps input order within a bucket, and a
+// grid's column, row-major, comes bottom to top) is left as it is; a large
+// one whose points share one x (a vertical chain in any order) is bucketed
 // again by y; anything else large goes to std::sort.
 void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
     if (last - first <= 16) {
         insertion_sort(first, last);
         return;
     }
+    if (std::is_sorted(first, last, keyed_less)) return;
     const bool one_x = std::all_of(first, last, [&](const Keyed& k) { return k.p.x == first->p.x; });
     if (!one_x) {
         std::sort(first, last, keyed_less);
