@@ -57,12 +57,15 @@ std::size_t components_by_bfs(const PlanarGraph& g) {
 }
 
 // Builds, checks the structure, Euler's formula and face areas, and compares
-// the faces with the hand-derived ones.
+// the faces with the hand-derived ones; the unchecked mode (which places
+// holes with less of the sweep) must give the same faces.
 void expect_faces(const PlanarGraph& g, std::vector<FaceShape> expected) {
     const Dcel d = build(g);
     const auto violation = validate(d);
     ASSERT_FALSE(violation.has_value()) << violation->message;
-    EXPECT_EQ(face_shapes(d), sorted_shapes(std::move(expected)));
+    expected = sorted_shapes(std::move(expected));
+    EXPECT_EQ(face_shapes(d), expected);
+    EXPECT_EQ(face_shapes(build(g, {.check_crossings = false})), expected) << "unchecked";
     EXPECT_EQ(d.num_vertices() + d.num_faces(), d.num_edges() + 1 + components_by_bfs(g));  // V - E + F = 1 + C
     EXPECT_TRUE(d.is_unbounded(Dcel::kUnboundedFace));
     for (Index f = 1; f < d.num_faces(); ++f) EXPECT_EQ(face_area(d, FaceId(f)).sign, Sign::Positive);
@@ -156,6 +159,42 @@ TEST(Build, ComponentInANotchStaysOutside) {
     expect_faces(graph({{0, 0}, {10, 0}, {10, 2}, {2, 2}, {2, 8}, {10, 8}, {10, 10}, {0, 10}, {5, 4}, {6, 5}},
                        {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 0}, {8, 9}}),
                  {{{}, {{0, 7, 6, 5, 4, 3, 2, 1}, {8, 9}}, {}}, {{0, 1, 2, 3, 4, 5, 6, 7}, {}, {}}});
+}
+
+TEST(Build, AForestHasOnlyTheUnboundedFace) {
+    // A U-shaped path 0-1-2-3 (open to the west) with segment 4-5 and
+    // isolated 6 in its notch: no cycle anywhere, so all three are holes of
+    // the unbounded face. The path's walk goes out and back: 0,1,2,3,2,1.
+    expect_faces(graph({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {4, 4}, {6, 6}, {5, 2}}, {{0, 1}, {1, 2}, {2, 3}, {4, 5}}),
+                 {{{}, {{0, 1, 2, 3, 2, 1}, {4, 5}}, {6}}});
+}
+
+TEST(Build, TreesAmongCyclesLandInTheirFaces) {
+    // Square S (0-3) holds path A (4-5-6), segment B (7-8) straight above A,
+    // triangle T (9-11) and segment C (12-13) above T's upper-left edge, and
+    // isolated 19 above A. Below B's and 19's leftmost points is A's edge
+    // 4-5 (a tree: no face of its own), then S's bottom: they are in S.
+    // Below C is T's edge 9-11, whose upper side is T's outside: C is where
+    // T is, in S. Isolated 17 is inside T. Path D (14-16) and isolated 18
+    // are outside S.
+    expect_faces(graph({{0, 0},   {20, 0},  {20, 20}, {0, 20},  {2, 3},  {12, 3}, {12, 5}, {5, 8},   {7, 9},   {14, 10},
+                        {18, 10}, {16, 12}, {15, 15}, {17, 16}, {30, 5}, {32, 6}, {31, 8}, {16, 11}, {-5, -5}, {8, 6}},
+                       {{0, 1},
+                        {1, 2},
+                        {2, 3},
+                        {3, 0},
+                        {4, 5},
+                        {5, 6},
+                        {7, 8},
+                        {9, 10},
+                        {10, 11},
+                        {11, 9},
+                        {12, 13},
+                        {14, 15},
+                        {15, 16}}),
+                 {{{}, {{0, 3, 2, 1}, {14, 15, 16, 15}}, {18}},
+                  {{0, 1, 2, 3}, {{4, 5, 6, 5}, {7, 8}, {9, 11, 10}, {12, 13}}, {19}},
+                  {{9, 10, 11}, {}, {17}}});
 }
 
 TEST(Build, HolesNestedDeeply) {

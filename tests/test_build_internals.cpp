@@ -94,6 +94,46 @@ TEST(LexOrder, MatchesStdSortOnSpreadAndClusteredPoints) {
     }
 }
 
+TEST(LexOrder, InputAlreadyInOrderAndAlmostInOrder) {
+    // Strictly increasing input takes a shortcut (the identity), and so
+    // does a large bucket already in order; one step that is not strictly
+    // increasing (an equal point, -0.0 next to 0.0, or one pair swapped)
+    // must not.
+    std::vector<Point> pts;
+    for (int i = 0; i < 100; ++i) pts.push_back({static_cast<double>(i / 3), static_cast<double>(i % 3)});
+    expect_lex_order_matches(pts);
+    for (const std::size_t k : {std::size_t{1}, std::size_t{50}, std::size_t{99}}) {
+        std::vector<Point> dup = pts;
+        dup[k] = dup[k - 1];
+        expect_lex_order_matches(dup);
+        std::vector<Point> swapped = pts;
+        std::swap(swapped[k], swapped[k - 1]);
+        expect_lex_order_matches(swapped);
+    }
+    // A row-major grid: every column is a bucket of the x pass that is
+    // already in order; then one column with an equal point, and one with
+    // a swapped pair, and one column written with -0.0 and 0.0 mixed.
+    std::vector<Point> grid;
+    for (int y = 0; y < 40; ++y) {
+        for (int x = 0; x < 40; ++x) grid.push_back({static_cast<double>(x), static_cast<double>(y)});
+    }
+    expect_lex_order_matches(grid);
+    for (const std::size_t k : {std::size_t{40 * 20 + 7}, std::size_t{40 * 39 + 39}}) {
+        std::vector<Point> dup = grid;
+        dup[k] = dup[k - 40];
+        expect_lex_order_matches(dup);
+        std::vector<Point> swapped = grid;
+        std::swap(swapped[k], swapped[k - 40]);
+        expect_lex_order_matches(swapped);
+    }
+    std::vector<Point> zeros = grid;
+    for (std::size_t k = 0; k < zeros.size(); k += 80) zeros[k].x = -0.0;
+    expect_lex_order_matches(zeros);
+    expect_lex_order_matches({{-1, 0}, {-0.0, 0}, {0.0, 0}, {1, 0}});
+    expect_lex_order_matches({{-1, 0}, {0.0, -1}, {-0.0, 0}, {1, 0}});
+    expect_lex_order_matches({{5, 5}});
+}
+
 TEST(LexOrder, AllOnOneVerticalLineAndSignedZeros) {
     std::vector<Point> pts;
     for (int i = 0; i < 1000; ++i) pts.push_back({0.0, static_cast<double>((i * 7919) % 1000)});

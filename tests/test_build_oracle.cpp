@@ -174,10 +174,30 @@ bool valid(const PlanarGraph& g) {
     return true;
 }
 
+// Whether u and v are already joined by a path in g (by search).
+bool connected(const PlanarGraph& g, Index u, Index v) {
+    std::vector<char> seen(g.vertices.size(), 0);
+    std::vector<Index> stack{u};
+    seen[u] = 1;
+    while (!stack.empty()) {
+        const Index x = stack.back();
+        stack.pop_back();
+        if (x == v) return true;
+        for (const GraphEdge& e : g.edges) {
+            for (const auto& [a, b] : {std::pair{e.u, e.v}, std::pair{e.v, e.u}}) {
+                if (a.index() == x && seen[b.index()] == 0) seen[b.index()] = 1, stack.push_back(b.index());
+            }
+        }
+    }
+    return false;
+}
+
 // Distinct points on a small grid (many collinear triples), random edges kept
 // when the graph stays valid, and sometimes nested frames around the lot so
-// that holes have holes.
-PlanarGraph random_graph(std::mt19937_64& rng, bool keep_valid) {
+// that holes have holes. With trees_only, an edge is also dropped when it
+// would close a cycle, so the only cycles are the frames: trees among and
+// inside cycles, or a whole forest when there are no frames.
+PlanarGraph random_graph(std::mt19937_64& rng, bool keep_valid, bool trees_only = false) {
     PlanarGraph g;
     const int side = std::uniform_int_distribution<int>(3, 9)(rng);
     const int points = std::uniform_int_distribution<int>(1, side * side / 2 + 1)(rng);
@@ -200,7 +220,7 @@ PlanarGraph random_graph(std::mt19937_64& rng, bool keep_valid) {
     for (int i = 0; i < attempts; ++i) {
         const Index u = std::uniform_int_distribution<Index>(0, n - 1)(rng);
         const Index v = std::uniform_int_distribution<Index>(0, n - 1)(rng);
-        if (u == v) continue;
+        if (u == v || (trees_only && connected(g, u, v))) continue;
         g.edges.push_back({VertexId(u), VertexId(v)});
         if (keep_valid && !valid(g)) g.edges.pop_back();
     }
@@ -213,6 +233,19 @@ TEST(BuildOracle, FacesHolesAndIsolatedVerticesMatchBruteForce) {
     for (int round = 0; round < 400; ++round) {
         const PlanarGraph g = random_graph(rng, true);
         ASSERT_TRUE(valid(g));
+        const std::vector<FaceShape> expected = oracle_faces(g);
+        ASSERT_EQ(testing::face_shapes(build(g)), expected) << "round " << round;
+        ASSERT_EQ(testing::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;
+    }
+}
+
+TEST(BuildOracle, TreesAmongFramesMatchBruteForce) {
+    // The unchecked build skips the sweep for forests and sweeps only the
+    // components with cycles otherwise: trees must still land in the right
+    // frame.
+    std::mt19937_64 rng(2028);
+    for (int round = 0; round < 300; ++round) {
+        const PlanarGraph g = random_graph(rng, true, true);
         const std::vector<FaceShape> expected = oracle_faces(g);
         ASSERT_EQ(testing::face_shapes(build(g)), expected) << "round " << round;
         ASSERT_EQ(testing::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;

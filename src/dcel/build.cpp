@@ -62,12 +62,20 @@ private:
             while (component_[x] != x) x = component_[x] = component_[component_[x]];  // path halving
             return x;
         };
+        // cyclic_[root]: an edge inside the root's tree has closed a cycle
+        // (kept up to date on roots only, then moved to component numbers).
+        cyclic_.assign(n, 0);
         for (Index r = 0; r < n; ++r) {
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
                 if (rg_.target[s] > r) continue;  // each edge once, from its right end
                 const Index a = root(r);
                 const Index b = root(rg_.target[s]);
-                if (a != b) component_[std::max(a, b)] = std::min(a, b);
+                if (a == b) {
+                    cyclic_[a] = 1;
+                } else {
+                    component_[std::max(a, b)] = std::min(a, b);
+                    cyclic_[std::min(a, b)] |= cyclic_[std::max(a, b)];
+                }
             }
         }
         // Parents are smaller than children, so one ascending pass makes
@@ -76,6 +84,8 @@ private:
         for (Index r = 0; r < n; ++r) component_[r] = component_[component_[r]];
         for (Index r = 0; r < n; ++r) {
             if (component_[r] == r) {
+                cyclic_[leftmost_.size()] = cyclic_[r];  // leftmost_.size() <= r: that entry is done with
+                cyclic_count_ += cyclic_[r];
                 component_[r] = static_cast<Index>(leftmost_.size());
                 leftmost_.push_back(r);
                 if (rg_.degree(r) == 0) ++isolated_count_;
@@ -83,6 +93,7 @@ private:
                 component_[r] = component_[component_[r]];
             }
         }
+        cyclic_.resize(leftmost_.size());
     }
 
     // next_slot_[s]: the slot of next(half_edge[s]), the half-edge leaving
@@ -132,15 +143,29 @@ private:
     // The sweep: rejects crossings (when asked to) and finds, for each
     // component's leftmost vertex, the edge directly below it, as the slot of
     // its left-to-right half-edge. It runs before the cycles are found, so
-    // that its memory and theirs are never held at once. Skipped for a
-    // connected graph when crossings are not checked.
+    // that its memory and theirs are never held at once.
+    //
+    // When crossings are not checked, only components with a cycle matter:
+    // a tree has no bounded face, so it contains nothing, and it adds no
+    // face to the others (the face above the first cycle-bearing edge below
+    // a point is the face that contains it). So the sweep is skipped for a
+    // connected graph and for a forest (every component is then a hole of
+    // the unbounded face), and otherwise carries only the edges of
+    // components with cycles.
     void find_edges_below() {
         below_.assign(leftmost_.size(), kNoIndex);
-        if (!options_.check_crossings && leftmost_.size() <= 1) return;
+        std::vector<char> in_status;
+        const bool skip = !options_.check_crossings && (leftmost_.size() <= 1 || cyclic_count_ == 0);
+        if (!skip && !options_.check_crossings && cyclic_count_ < leftmost_.size()) {
+            in_status.resize(rg_.num_vertices());
+            for (Index r = 0; r < rg_.num_vertices(); ++r) in_status[r] = cyclic_[component_[r]];
+        }
+        release(cyclic_);
+        if (skip) return;
         std::vector<char> wanted(rg_.num_vertices(), 0);
         for (const Index r : leftmost_) wanted[r] = 1;
         std::vector<Index> below(rg_.num_vertices(), kNoIndex);
-        sweep_ranks(rg_, g_, wanted, below, options_.check_crossings);
+        sweep_ranks(rg_, g_, wanted, below, options_.check_crossings, in_status);
         for (Index c = 0; c < leftmost_.size(); ++c) below_[c] = below[leftmost_[c]];
     }
 
@@ -271,6 +296,8 @@ private:
     std::vector<Index> leftmost_;         // per component: the rank of its leftmost vertex
     std::vector<Index> below_;            // per component: the slot below its leftmost vertex, or kNoIndex
     std::size_t isolated_count_ = 0;      // components without edges
+    std::vector<char> cyclic_;            // per component: has a cycle (a bounded face), see find_components
+    std::size_t cyclic_count_ = 0;        // components with a cycle
     std::vector<Index> next_slot_;        // per slot
     std::vector<Index> cycle_of_slot_;    // per slot
     std::vector<HalfEdgeId> cycle_rep_;   // per cycle: its smallest half-edge

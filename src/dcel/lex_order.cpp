@@ -64,13 +64,16 @@ std::vector<Index> distribute(const Keyed* first, const Keyed* last, Keyed* out,
 }
 
 // Sorts one bucket of the x pass. Most hold a couple of points; a large one
-// whose points share one x (a grid's column, a vertical chain) is bucketed
+// already in order (the x pass keeps input order within a bucket, and a
+// grid's column, row-major, comes bottom to top) is left as it is; a large
+// one whose points share one x (a vertical chain in any order) is bucketed
 // again by y; anything else large goes to std::sort.
 void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
     if (last - first <= 16) {
         insertion_sort(first, last);
         return;
     }
+    if (std::is_sorted(first, last, keyed_less)) return;
     const bool one_x = std::all_of(first, last, [&](const Keyed& k) { return k.p.x == first->p.x; });
     if (!one_x) {
         std::sort(first, last, keyed_less);
@@ -97,6 +100,19 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
     out.vertex_of_rank.resize(n);
     out.rank_of_vertex.resize(n);
     if (n == 0) return out;
+
+    // Points that come already in strictly increasing order (a chain or a
+    // polyline generated left to right) are their own sweep order, and
+    // strictly increasing means no two are equal: one pass of lex_less.
+    Index sorted_prefix = 1;
+    while (sorted_prefix < n && lex_less(points[sorted_prefix - 1], points[sorted_prefix])) ++sorted_prefix;
+    if (sorted_prefix == n) {
+        for (Index v = 0; v < n; ++v) {
+            out.vertex_of_rank[v] = VertexId(v);
+            out.rank_of_vertex[v] = v;
+        }
+        return out;
+    }
 
     std::vector<Keyed> scratch(n);
     for (Index v = 0; v < n; ++v) scratch[v] = Keyed{points[v], v};

@@ -1,6 +1,7 @@
 #include "dcel/sweep.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <utility>
 
 #include "dcel/error.hpp"
@@ -49,10 +50,11 @@ struct Span {
 
 class Sweep {
 public:
-    Sweep(const RankGraph& rg, const PlanarGraph& g, bool check)
+    Sweep(const RankGraph& rg, const PlanarGraph& g, bool check, std::span<const char> in_status)
         : rg_(rg),
           g_(g),
           check_(check),
+          in_status_(in_status),
           node_of_slot_(rg.num_slots(), kNoIndex),
           spans_(g.edges.size()),
           status_(static_cast<Index>(g.edges.size())) {}
@@ -85,6 +87,10 @@ private:
     }
 
     void visit(Index r, std::span<const char> wanted, std::span<Index> below_out) {
+        if (!in_status_.empty() && in_status_[r] == 0) {
+            if (wanted[r] != 0) locate_only(r, below_out);
+            return;
+        }
         const Point p = rg_.point[r];
         const Index ring_begin = rg_.offset[r];
         const Index ring_end = rg_.offset[r + 1];
@@ -113,11 +119,9 @@ private:
         // `above` must be the first active edge not below p (what a search
         // would find). The candidates are that exactly when `below` is below
         // p and `above` is not; otherwise, and when nothing ended here, search.
-        if ((!any_ending || (below != StatusList::kNone && !below_point(below, p)) ||
-             (above != StatusList::kNone && below_point(above, p))) &&
-            !near_hint(p, below, above)) {
-            above = status_.first_not_below([&](Index e) { return below_point(e, p); });
-            below = above == StatusList::kNone ? status_.last() : status_.prev(above);
+        if (!any_ending || (below != StatusList::kNone && !below_point(below, p)) ||
+            (above != StatusList::kNone && below_point(above, p))) {
+            locate(p, below, above);
         }
         if (check_ && above != StatusList::kNone && orient2d(left(above), right(above), p) == Sign::Zero) {
             throw_vertex_on_edge(g_, rg_.vertex[r], EdgeId(spans_[above].edge));
@@ -162,6 +166,25 @@ private:
             if (below != StatusList::kNone) check_pair(below, lowest_new);
             if (above != StatusList::kNone) check_pair(last, above);
         }
+    }
+
+    // The adjacent pair of active edges (below, above) with `below` below p
+    // and `above` not (kNone past either end): near the previous vertex's
+    // place if possible, else by a search.
+    void locate(Point p, Index& below, Index& above) const {
+        if (near_hint(p, below, above)) return;
+        above = status_.first_not_below([&](Index e) { return below_point(e, p); });
+        below = above == StatusList::kNone ? status_.last() : status_.prev(above);
+    }
+
+    // A vertex whose edges stay out of the status (see sweep_ranks): only
+    // the edge below it is looked up.
+    void locate_only(Index r, std::span<Index> below_out) {
+        Index below = StatusList::kNone;
+        Index above = StatusList::kNone;
+        locate(rg_.point[r], below, above);
+        below_out[r] = below == StatusList::kNone ? kNoIndex : spans_[below].start_slot;
+        hint_ = above != StatusList::kNone ? above : below;
     }
 
     // The place of p found from the node the previous vertex left in hint_,
@@ -243,6 +266,7 @@ private:
     const RankGraph& rg_;
     const PlanarGraph& g_;
     bool check_;
+    std::span<const char> in_status_;  // empty: every edge enters the status
     std::vector<Index> node_of_slot_;  // see home_of_starting
     std::vector<Span> spans_;          // by node
     StatusList status_;
@@ -253,8 +277,9 @@ private:
 }  // namespace
 
 void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted, std::span<Index> below,
-                 bool check_intersections) {
-    Sweep(rg, graph, check_intersections).run(wanted, below);
+                 bool check_intersections, std::span<const char> in_status) {
+    assert(in_status.empty() || !check_intersections);
+    Sweep(rg, graph, check_intersections, in_status).run(wanted, below);
 }
 
 std::vector<EdgeId> sweep(const SweepInput& in, bool check_intersections) {

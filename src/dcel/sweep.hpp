@@ -44,7 +44,13 @@ struct SweepInput {
 // with wanted[r] set, below[r] becomes the slot of the left-to-right
 // half-edge of the edge below (kNoIndex: nothing below); other entries are
 // left alone. `graph` is the input, used only to word error messages.
+//
+// When `in_status` is not empty, only the edges of ranks r with in_status[r]
+// set enter the status (a set closed under edges: whole components), and
+// the other ranks are only located, when wanted: `below` then answers for
+// the sub-graph of those edges. Requires !check_intersections (the skipped
+// edges are not checked).
 void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted, std::span<Index> below,
-                 bool check_intersections);
+                 bool check_intersections, std::span<const char> in_status = {});
 
 }  // namespace dcel
