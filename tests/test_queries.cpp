@@ -1,5 +1,5 @@
 // Code that the larger suites did not reach (found by scripts/coverage):
-// cycle_area(), neighbours(), printing a Location, ExactSum::add/subtract,
+// cycle_area(), neighbours(), backwards walks, Change::renamed(), printing a Location, ExactSum::add/subtract,
 // the names of the input error kinds, and an edge between two vertices of
 // large degree. Expected values are worked out by hand, mostly on a 4x4
 // square with the diagonal from (0,0) to (4,4) and a small triangle
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "dcel/build.hpp"
+#include "dcel/change.hpp"
 #include "dcel/error.hpp"
 #include "dcel/geometry/exact_sum.hpp"
 #include "dcel/locate.hpp"
@@ -52,6 +53,38 @@ TEST(Queries, CycleAreaIsSignedByOrientation) {
     // The small triangle: legs 0.5 and 0.5, so 0.125, either way round.
     EXPECT_EQ(cycle_area(d, kTriangle).value, 0.125);
     EXPECT_EQ(cycle_area(d, kTriangleBack).value, -0.125);
+}
+
+TEST(Queries, CycleWalksBothWays) {
+    const Dcel d = square_with_hole();
+    // The lower-right half: h0 (0,0)->(4,0), h2 (4,0)->(4,4), then h9, edge 4
+    // (0,0)-(4,4) walked from (4,4) back to (0,0).
+    std::vector<HalfEdgeId> forwards;
+    for (const HalfEdgeId h : d.cycle(kBottom)) forwards.push_back(h);
+    EXPECT_EQ(forwards, (std::vector<HalfEdgeId>{HalfEdgeId(0), HalfEdgeId(2), HalfEdgeId(9)}));
+    std::vector<HalfEdgeId> backwards;
+    for (const HalfEdgeId h : d.cycle_reversed(kBottom)) backwards.push_back(h);
+    EXPECT_EQ(backwards, (std::vector<HalfEdgeId>{HalfEdgeId(0), HalfEdgeId(9), HalfEdgeId(2)}));
+    // Postfix ++ returns the position before the step.
+    auto it = d.cycle(kBottom).begin();
+    const auto before = it++;
+    EXPECT_EQ(*before, HalfEdgeId(0));
+    EXPECT_EQ(*it, HalfEdgeId(2));
+}
+
+TEST(Change, RenamedFollowsRemovalMergeAndMove) {
+    // Face 2 merged into face 1 and the last face, 5, renumbered as 2.
+    Change c;
+    c.faces.removed = FaceId(2);
+    c.faces.merged_into = FaceId(1);
+    c.faces.moved = FaceId(5);
+    EXPECT_EQ(c.renamed(FaceId(2)), FaceId(1));
+    EXPECT_EQ(c.renamed(FaceId(5)), FaceId(2));
+    EXPECT_EQ(c.renamed(FaceId(3)), FaceId(3));
+    // An edge that just went away (nothing merged, nothing moved): null.
+    c.edges.removed = EdgeId(4);
+    EXPECT_TRUE(c.renamed(EdgeId(4)).is_null());
+    EXPECT_EQ(c.renamed(EdgeId(7)), EdgeId(7));
 }
 
 TEST(Queries, NeighboursAreTheFacesAcrossEachBoundary) {

@@ -27,7 +27,6 @@ public:
     bool add_segment(Point a, Point b);
 
     [[nodiscard]] std::size_t num_vertices() const { return g_.vertices.size(); }
-    [[nodiscard]] std::size_t num_edges() const { return g_.edges.size(); }
     [[nodiscard]] const PlanarGraph& graph() const { return g_; }
     [[nodiscard]] PlanarGraph take() { return std::move(g_); }
 

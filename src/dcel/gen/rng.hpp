@@ -53,9 +53,6 @@ public:
         return v[below(v.size())];
     }
 
-    // A seed for an independent sub-stream (e.g. one per component).
-    std::uint64_t fork() { return next(); }
-
 private:
     static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
     static std::uint64_t splitmix64(std::uint64_t& x) {

@@ -1,7 +1,9 @@
 #include "dcel/io/decimal.hpp"
 
-#include <locale.h>  // newlocale (POSIX)
-#include <stdlib.h>  // strtod_l (glibc, BSD)
+// The C headers on purpose: newlocale and strtod_l are POSIX and glibc/BSD
+// extensions that <clocale> and <cstdlib> need not declare.
+#include <locale.h>  // NOLINT(modernize-deprecated-headers): newlocale
+#include <stdlib.h>  // NOLINT(modernize-deprecated-headers): strtod_l
 
 #include <cerrno>
 #include <cmath>
