@@ -3,8 +3,10 @@
 // must be reported is known without asking the comparison.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <set>
+#include <string>
 
 #include "dcel/build.hpp"
 #include "dcel/check/compare.hpp"
@@ -368,6 +370,17 @@ TEST(CheckDump, WrongOuterBoundaryWhenOuterAndHoleSwap) {
     a.faces[0].outer = a.faces[0].inner[0];
     const Report r2 = show(compare_dump(d, a));
     EXPECT_GE(count_kind(r2, DifferenceKind::WrongOuterBoundary), 1U);
+
+    a = rich_dump();  // West's outer boundary listed as a hole: two faces without one
+    FaceDump& w = a.faces[west.index()];
+    w.inner.push_back(w.outer);
+    w.outer = HalfEdgeId();
+    const Report r3 = show(compare_dump(d, a));
+    const std::string two = "answer faces f0 f" + std::to_string(west.index()) +
+                            " (2) have no outer boundary; only the unbounded face lacks one";
+    EXPECT_TRUE(std::any_of(r3.differences.begin(), r3.differences.end(), [&](const check::Difference& x) {
+        return x.kind == DifferenceKind::WrongOuterBoundary && x.message == two;
+    })) << report_text(r3);
 }
 
 TEST(CheckDump, WrongIsolatedVertex) {

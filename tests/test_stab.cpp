@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <set>
+#include <string>
 
 #include "dcel/error.hpp"
 #include "dcel/geometry/predicates.hpp"
@@ -84,6 +85,24 @@ TEST(Stab, LinesAcrossTheCountries) {
     EXPECT_EQ(stab_line(d, {20, 0}, {20, 1}), (Pieces{F(0)}));
     EXPECT_THROW((void)stab_line(d, {20, 0}, {20, 1}, HalfEdgeId(0)), TopologyError);
     EXPECT_THROW((void)stab_line(d, {1, 1}, {1, 1}), InvalidInput);
+    // From a given half-edge: the same refusals, and ids that do not exist.
+    try {
+        (void)stab_line(d, {1, 1}, {1, 1}, HalfEdgeId(0));
+        ADD_FAILURE() << "two equal points accepted";
+    } catch (const InvalidInput& e) {
+        EXPECT_EQ(e.kind(), InputErrorKind::BadCoordinate);
+        EXPECT_NE(std::string(e.what()).find("a line needs two different points, but both are (1, 1)"), std::string::npos)
+            << e.what();
+    }
+    for (const HalfEdgeId cut : {HalfEdgeId(22), HalfEdgeId(9999), HalfEdgeId()}) {
+        try {
+            (void)stab_line(d, {-1, 3}, {1, 3}, cut);
+            ADD_FAILURE() << "half-edge " << cut.str() << " accepted; the map has 22";
+        } catch (const InvalidInput& e) {
+            EXPECT_EQ(e.kind(), InputErrorKind::BadIndex);
+            EXPECT_NE(std::string(e.what()).find("there is no half-edge " + cut.str()), std::string::npos) << e.what();
+        }
+    }
     EXPECT_THROW((void)stab_segment(d, {1, 1}, {NAN, 1}), InvalidInput);
     // Only isolated vertices on the line.
     const Dcel points = build(graph({{3, 3}, {1, 1}, {5, 0}}, {}));

@@ -76,6 +76,12 @@ TEST(Validate, References) {
     d = rich_dump();
     d.faces.clear();
     expect_violation(d, Invariant::References, "no faces");
+    d = rich_dump();
+    d.vertex_out[2] = HalfEdgeId(500);
+    expect_violation(d, Invariant::References, "out(v2) = h500 is out of range");
+    d = rich_dump();
+    d.faces[1].outer = HalfEdgeId(600);
+    expect_violation(d, Invariant::References, "the outer cycle of f1 names h600, out of range");
 }
 
 TEST(Validate, Twin) {
