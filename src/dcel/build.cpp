@@ -74,7 +74,7 @@ private:
                     cyclic_[a] = 1;
                 } else {
                     component_[std::max(a, b)] = std::min(a, b);
-                    cyclic_[std::min(a, b)] |= cyclic_[std::max(a, b)];
+                    if (cyclic_[std::max(a, b)] != 0) cyclic_[std::min(a, b)] = 1;
                 }
             }
         }
