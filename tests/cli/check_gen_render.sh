@@ -83,6 +83,8 @@ render)
     expect stdout 0 '^<svg xmlns="http://www.w3.org/2000/svg"'
     run "$D render $g -o $tmp/out.svg --title 'a <b> & \"c\"' && grep -c '<title>a &lt;b&gt; &amp; &quot;c&quot;</title>' $tmp/out.svg"
     expect file-and-escaped-title 0 '^1$'
+    run "$D render $g -o $tmp/out.svg --title \"it's\" && grep -c '<title>it&apos;s</title>' $tmp/out.svg"
+    expect apostrophe-in-title 0 '^1$'
     if command -v rsvg-convert >/dev/null 2>&1; then
         run "$D gen --family near-degenerate --seed 2 --vertices 40 | $D render - | rsvg-convert -o $tmp/out.png && echo converted"
         expect rsvg-converts 0 '^converted$'

@@ -33,6 +33,12 @@ edit)
     printf '%s\n' '{"steps": [{"add_vertex": {"at": [1]}}]}' >"$tmp/arity.json"
     run "$D edit $map $tmp/arity.json"
     expect point-arity 1 'steps\[0\]\.add_vertex\.at: expected a point \[x, y\], found an array of 1 element'
+    printf '%s\n' '{"steps": [{"add_vertex": {"at": [1, 2, 3]}}]}' >"$tmp/arity3.json"
+    run "$D edit $map $tmp/arity3.json"
+    expect point-arity-3 1 'steps\[0\]\.add_vertex\.at: expected a point \[x, y\], found an array of 3 elements'
+    printf '%s\n' '{"steps": [{"add_edge": {"from": 0, "to": 99}}]}' >"$tmp/bad_id.json"
+    run "$D edit $map $tmp/bad_id.json"
+    expect bad-vertex-id 1 '^dcel: .*bad_id.json: steps\[0\]: .*v99'
     printf '%s\n' '{"steps": [{"remove_vertex": {"vertex": 4}}]}' >"$tmp/busy.json"
     run "$D edit $map $tmp/busy.json"
     expect remove-vertex-with-edges 1 '^dcel: .*steps\[0\]: remove_isolated_vertex: .*v4'

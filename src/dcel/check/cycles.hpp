@@ -24,7 +24,6 @@ public:
     [[nodiscard]] Index cycle_count() const { return static_cast<Index>(smallest_.size()); }
     [[nodiscard]] Index cycle_length(Index c) const { return length_[c]; }
     // Cycles are numbered in order of their smallest half-edge, as `dcel faces` lists them.
-    [[nodiscard]] HalfEdgeId cycle_start(Index c) const { return smallest_[c]; }
     [[nodiscard]] std::vector<Index> cycle_vertices(Index c) const;
 
 private:
