@@ -75,7 +75,7 @@ usage)
     run "$D faces --frobnicate $map"
     expect unknown-option 2 'frobnicate'
     run "$D faces $tmp/nonexistent.json"
-    expect missing-file 2 'cannot open [^\n]*nonexistent.json: No such file or directory'
+    expect missing-file 2 'cannot open .*nonexistent.json: No such file or directory'
     run "$D faces - < $src/tests/consumer/square.json"
     expect stdin 0 '^\{"faces": \[\[0, 1, 2\], \[1, 0, 3, 2\], \[2, 3, 0\]\]\}$'
     run "$D faces < /dev/null"
