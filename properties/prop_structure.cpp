@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include "dcel/build.hpp"
@@ -89,6 +90,38 @@ RC_GTEST_PROP(Structure, prop_cycles_partition_half_edges_and_match_face_records
         for (const Index cy : named) ++listed[cy];
     }
     for (Index cy = 0; cy < cycles; ++cy) RC_ASSERT(listed[cy] == 1);
+}
+
+// docs/formats.md: faces after the unbounded one are numbered in order of
+// the smallest half-edge of their outer boundary, and vertex_out, outer and
+// inner name the smallest half-edge they can (holes and isolated vertices
+// listed in increasing order). Checked against a walk of every cycle from
+// its smallest half-edge, in both build modes: the unchecked one labels a
+// tree's cycle without walking it.
+RC_GTEST_PROP(Structure, prop_every_name_is_the_smallest_half_edge, ()) {
+    const GraphCase c = *graphs();
+    for (const bool checked : {true, false}) {
+        const DcelDump d = to_dump(build(c.graph, BuildOptions{.check_crossings = checked}));
+        const auto n = static_cast<Index>(d.half_edges.size());
+        std::vector<Index> smallest_on_cycle(n, kNoIndex);  // walks start at increasing h: each at its cycle's smallest
+        for (Index h = 0; h < n; ++h) {
+            for (Index x = h; smallest_on_cycle[x] == kNoIndex; x = d.half_edges[x].next.index()) smallest_on_cycle[x] = h;
+        }
+        for (Index f = 0; f < d.faces.size(); ++f) {
+            const FaceDump& face = d.faces[f];
+            if (f >= 2) RC_ASSERT(d.faces[f - 1].outer < face.outer);
+            if (!face.outer.is_null()) RC_ASSERT(smallest_on_cycle[face.outer.index()] == face.outer.index());
+            for (const HalfEdgeId h : face.inner) RC_ASSERT(smallest_on_cycle[h.index()] == h.index());
+            RC_ASSERT(std::is_sorted(face.inner.begin(), face.inner.end()));
+            RC_ASSERT(std::is_sorted(face.isolated.begin(), face.isolated.end()));
+        }
+        std::vector<HalfEdgeId> smallest_out(d.vertices.size());  // null: none yet
+        for (Index h = 0; h < n; ++h) {
+            HalfEdgeId& out = smallest_out[d.half_edges[h].origin.index()];
+            if (out.is_null()) out = HalfEdgeId(h);
+        }
+        RC_ASSERT(d.vertex_out == smallest_out);
+    }
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 // v->u): the comments give the reasoning where it is not a plain polygon.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <numeric>
+#include <random>
 #include <string>
 
 #include "dcel/build.hpp"
@@ -371,6 +373,63 @@ TEST(BuildOptions, UncheckedModeBuildsTheSameFacesOnValidInput) {
     const PlanarGraph g = graph({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {5, 2}, {5, 4}, {2, 4}, {3, 6}, {4, 7}},
                                 {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {8, 9}});
     EXPECT_EQ(face_shapes(build(g, {.check_crossings = false})), face_shapes(build(g)));
+}
+
+// More than 8192 half-edges, so that build() writes the DCEL through
+// several buckets of half-edge ids (write_half_edges), with shuffled ids so
+// that consecutive slots write to different buckets: a triangulated lattice
+// with gaps, a comb-shaped tree beside it (its cycle is labelled without a
+// walk) and isolated vertices. validate() checks the result; the two modes
+// must agree, and Euler's formula hold.
+TEST(BuildOptions, LargeShuffledGraphSpansSeveralWriteBuckets) {
+    std::mt19937 rng(7);
+    constexpr Index kSide = 70;
+    std::vector<Point> points;
+    std::vector<std::pair<Index, Index>> edges;
+    for (Index y = 0; y < kSide; ++y) {
+        for (Index x = 0; x < kSide; ++x) points.push_back({static_cast<double>(x), static_cast<double>(y)});
+    }
+    for (Index y = 0; y < kSide; ++y) {
+        for (Index x = 0; x < kSide; ++x) {
+            const Index i = y * kSide + x;
+            if (x + 1 < kSide && rng() % 4 != 0) edges.emplace_back(i, i + 1);
+            if (y + 1 < kSide && rng() % 4 != 0) edges.emplace_back(i, i + kSide);
+            if (x + 1 < kSide && y + 1 < kSide && rng() % 2 != 0)
+                edges.emplace_back(i, i + kSide + 1);  // one diagonal a cell
+        }
+    }
+    const auto comb = static_cast<Index>(points.size());  // a spine along y = 0 with teeth of 49 edges
+    for (Index x = 0; x < 40; ++x) {
+        for (Index y = 0; y < 50; ++y) {
+            points.push_back({static_cast<double>(kSide + 5 + x), static_cast<double>(y)});
+            if (y > 0) edges.emplace_back(comb + x * 50 + y - 1, comb + x * 50 + y);
+        }
+        if (x > 0) edges.emplace_back(comb + (x - 1) * 50, comb + x * 50);
+    }
+    for (Index k = 0; k < 5; ++k) points.push_back({-2.0 - k, 3.0 * k});
+    // Shuffle vertex ids, edge order and orientation.
+    std::vector<Index> new_id(points.size());
+    std::iota(new_id.begin(), new_id.end(), 0);
+    std::shuffle(new_id.begin(), new_id.end(), rng);
+    std::vector<Point> shuffled(points.size());
+    for (Index v = 0; v < points.size(); ++v) shuffled[new_id[v]] = points[v];
+    for (auto& [u, v] : edges) {
+        u = new_id[u];
+        v = new_id[v];
+        if (rng() % 2 != 0) std::swap(u, v);
+    }
+    std::shuffle(edges.begin(), edges.end(), rng);
+    const PlanarGraph g = graph(shuffled, edges);
+    ASSERT_GT(2 * g.edges.size(), 2U * 8192U);
+
+    const Dcel d = build(g);
+    const auto violation = validate(d);
+    ASSERT_FALSE(violation.has_value()) << violation->message;
+    const Dcel unchecked = build(g, {.check_crossings = false});
+    const auto unchecked_violation = validate(unchecked);
+    ASSERT_FALSE(unchecked_violation.has_value()) << unchecked_violation->message;
+    EXPECT_EQ(face_shapes(unchecked), face_shapes(d));
+    EXPECT_EQ(d.num_vertices() + d.num_faces(), d.num_edges() + 1 + components_by_bfs(g));
 }
 
 TEST(BuildOptions, UncheckedModeSurvivesCrossings) {

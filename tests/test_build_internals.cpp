@@ -62,7 +62,10 @@ void expect_lex_order_matches(const std::vector<Point>& pts) {
         const LexOrder got = lex_order_checked(pts);
         ASSERT_TRUE(dup.empty()) << "accepted a duplicate point";
         ASSERT_EQ(got.vertex_of_rank, expected);
-        for (Index r = 0; r < pts.size(); ++r) EXPECT_EQ(got.rank_of_vertex[got.vertex_of_rank[r].index()], r);
+        for (Index r = 0; r < pts.size(); ++r) {
+            EXPECT_EQ(got.rank_of_vertex[got.vertex_of_rank[r].index()], r);
+            EXPECT_EQ(got.point_of_rank[r], pts[got.vertex_of_rank[r].index()]) << "rank " << r;
+        }
     } catch (const InvalidInput& e) {
         ASSERT_FALSE(dup.empty()) << e.what();
         EXPECT_EQ(e.kind(), InputErrorKind::DuplicatePoint);

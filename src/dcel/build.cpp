@@ -1,6 +1,8 @@
 #include "dcel/build.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <utility>
 
 #include "dcel/geometry/predicates.hpp"
@@ -98,29 +100,39 @@ private:
 
     // next_slot_[s]: the slot of next(half_edge[s]), the half-edge leaving
     // target(s) just clockwise of the twin. Twins are found from the small
-    // ring's side: a slot pointing into a small ring scans it (and then also
-    // links the twin, which points into this ring); only an edge between two
-    // large rings needs a binary search. O(E) with no scattered memory
-    // access whatever the input order; O(E log d) at worst.
+    // ring's side: a slot pointing into a small ring scans it and links both
+    // the slot and its twin (when both rings are small, only from the lower
+    // rank's side, so each edge is scanned for once); only an edge between
+    // two large rings needs binary searches. O(E) with no scattered memory
+    // access whatever the input order; O(E log d) at worst. Trees are left
+    // out: find_cycles labels them without walking.
     void link_slots() {
+        if (cyclic_count_ == 0) return;
         next_slot_.assign(num_slots(), kNoIndex);
         for (Index r = 0; r < rg_.num_vertices(); ++r) {
+            if (cyclic_[component_[r]] == 0) continue;
             const bool r_small = rg_.small(r);
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
                 const Index t = rg_.target[s];
                 if (rg_.small(t)) {
+                    if (r_small && t < r) continue;  // linked from t's ring
                     const Index twin_slot = rg_.slot_towards(t, r);
                     next_slot_[s] = rg_.clockwise(t, twin_slot);
-                    if (!r_small) next_slot_[twin_slot] = rg_.clockwise(r, s);
+                    next_slot_[twin_slot] = rg_.clockwise(r, s);
                 } else if (!r_small) {
-                    next_slot_[s] = rg_.clockwise(t, rg_.slot_towards(t, r));
-                }  // else: set from t's large ring
+                    next_slot_[s] = rg_.clockwise(t, rg_.search_towards(t, r));
+                }  // else: linked from t's large ring
             }
         }
     }
 
     // Cycles are found in slot order; cycle_rep_[c] is the smallest half-edge
     // id on cycle c (the one that names it in the result).
+    //
+    // A tree has exactly one boundary cycle, made of all its half-edges (any
+    // rotation system of a tree has one face), so its slots are labelled in
+    // ring order with no walk. Walking next() across a large tree jumps
+    // between distant rings at every step, a chain of dependent cache misses.
     void find_cycles() {
         cycle_of_slot_.assign(num_slots(), kNoIndex);
         const std::size_t edges = g_.edges.size();
@@ -128,6 +140,23 @@ private:
         // Euler: a planar embedding has E - V + isolated + 2 * (components with edges) cycles.
         const std::size_t expected = edges + isolated_count_ + 2 * with_edges;
         if (expected >= g_.vertices.size()) cycle_rep_.reserve(expected - g_.vertices.size());
+        if (cyclic_count_ < leftmost_.size()) {
+            std::vector<Index> tree_cycle(leftmost_.size(), kNoIndex);  // per component
+            for (Index r = 0; r < rg_.num_vertices(); ++r) {
+                const Index c = component_[r];
+                if (cyclic_[c] != 0 || rg_.degree(r) == 0) continue;
+                if (tree_cycle[c] == kNoIndex) {
+                    tree_cycle[c] = static_cast<Index>(cycle_rep_.size());
+                    cycle_rep_.emplace_back(rg_.half_edge[rg_.offset[r]]);
+                }
+                HalfEdgeId& rep = cycle_rep_[tree_cycle[c]];
+                for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
+                    cycle_of_slot_[s] = tree_cycle[c];
+                    rep = std::min(rep, rg_.half_edge[s]);
+                }
+            }
+        }
+        release(cyclic_);
         for (Index s = 0; s < num_slots(); ++s) {
             if (cycle_of_slot_[s] != kNoIndex) continue;
             const auto c = static_cast<Index>(cycle_rep_.size());
@@ -160,7 +189,6 @@ private:
             in_status.resize(rg_.num_vertices());
             for (Index r = 0; r < rg_.num_vertices(); ++r) in_status[r] = cyclic_[component_[r]];
         }
-        release(cyclic_);
         if (skip) return;
         std::vector<char> wanted(rg_.num_vertices(), 0);
         for (const Index r : leftmost_) wanted[r] = 1;
@@ -210,22 +238,34 @@ private:
 
     // Every cycle that is not the outer boundary of its component bounds a
     // face of its own; faces are numbered after the unbounded face in order
-    // of their smallest half-edge. A pass over half-edge ids does it in O(E).
+    // of their smallest half-edge. Those half-edges are marked in a bitmap
+    // of H bits, small enough to stay in cache where an array of H ids would
+    // not on shuffled input, and a face's number is the count of marks up
+    // to its half-edge: a running count per word plus a popcount. O(E).
     void number_faces() {
-        std::vector<Index> cycle_named_by(std::move(next_slot_));  // reuse the buffer, indexed by half-edge
-        std::fill(cycle_named_by.begin(), cycle_named_by.end(), kNoIndex);
+        release(next_slot_);
+        const std::size_t words = num_slots() / 64 + 1;
+        std::vector<std::uint64_t> named(words, 0);
         for (Index c = 0; c < cycle_rep_.size(); ++c) {
-            if (is_outer_cycle_[c] == 0) cycle_named_by[cycle_rep_[c].index()] = c;
+            const Index h = cycle_rep_[c].index();
+            if (is_outer_cycle_[c] == 0) named[h / 64] |= std::uint64_t{1} << (h % 64);
         }
-        face_of_cycle_.assign(cycle_rep_.size(), kNoIndex);
+        std::vector<Index> faces_before(words);  // faces numbered below word w's first half-edge
         face_outer_.reserve(1 + cycle_rep_.size() - (leftmost_.size() - isolated_count_));
         face_outer_.assign(1, HalfEdgeId());  // the unbounded face has no outer cycle
-        for (Index h = 0; h < cycle_named_by.size(); ++h) {
-            if (cycle_named_by[h] == kNoIndex) continue;
-            face_of_cycle_[cycle_named_by[h]] = static_cast<Index>(face_outer_.size());
-            face_outer_.emplace_back(h);
+        for (std::size_t w = 0; w < words; ++w) {
+            faces_before[w] = static_cast<Index>(face_outer_.size());
+            for (std::uint64_t bits = named[w]; bits != 0; bits &= bits - 1) {
+                face_outer_.emplace_back(static_cast<Index>(64 * w + static_cast<unsigned>(std::countr_zero(bits))));
+            }
         }
-        release(cycle_named_by);
+        face_of_cycle_.assign(cycle_rep_.size(), kNoIndex);
+        for (Index c = 0; c < cycle_rep_.size(); ++c) {
+            if (is_outer_cycle_[c] != 0) continue;
+            const Index h = cycle_rep_[c].index();
+            const std::uint64_t below = named[h / 64] & ((std::uint64_t{1} << (h % 64)) - 1);
+            face_of_cycle_[c] = faces_before[h / 64] + static_cast<Index>(std::popcount(below));
+        }
         for (Index c = 0; c < leftmost_.size(); ++c) {
             const Index container = container_cycle_[c] == kNoIndex ? 0 : face_of_cycle_[container_cycle_[c]];
             container_cycle_[c] = container;  // now a face number
@@ -235,32 +275,58 @@ private:
 
     // next(u->v) = the half-edge leaving v just clockwise of v->u: walking
     // each ring, the twin of slot s's half-edge is followed by the half-edge
-    // of the slot clockwise of s. Sequential reads, scattered writes.
+    // of the slot clockwise of s, and preceded by the twin of the one
+    // counterclockwise of s.
+    //
+    // The DCEL arrays are indexed by input half-edge ids, which may be in
+    // any order relative to the rings: written directly, every slot would
+    // cost four cache misses on shuffled input. So what each slot gives is
+    // first written, in ring order, to one of about H / 8192 buckets of
+    // consecutive half-edge ids (sequential streams), and then applied bucket
+    // by bucket, each bucket's lines of the four arrays in cache. Every id
+    // occurs once, so bucket b is exactly the records for ids b * 8192 ..
+    // and needs no counting pass. Origins come from the input edges in order.
     void write_half_edges() {
+        struct Record {
+            HalfEdgeId h;
+            HalfEdgeId twin_next;  // next(twin(h))
+            HalfEdgeId prev;       // prev(h)
+            FaceId face;           // face(h)
+        };
+        constexpr unsigned kBucketBits = 13;  // 8192 ids: 128 KiB of the four arrays
         const Index h_count = num_slots();
-        d_.origin_.resize(h_count);
-        d_.next_.resize(h_count);
-        d_.prev_.resize(h_count);
-        d_.face_.resize(h_count);
+        std::vector<Record> records(h_count);
+        std::vector<Index> fill((h_count >> kBucketBits) + 1);
+        for (Index b = 0; b < fill.size(); ++b) fill[b] = b << kBucketBits;
         d_.out_.assign(rg_.num_vertices(), HalfEdgeId());
         for (Index r = 0; r < rg_.num_vertices(); ++r) {
-            const VertexId v = rg_.vertex[r];
             HalfEdgeId out;
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
                 const HalfEdgeId h = rg_.half_edge[s];
-                const HalfEdgeId arriving = twin(h);
-                const HalfEdgeId leaving = rg_.half_edge[rg_.clockwise(r, s)];
-                d_.origin_[h.index()] = v;
-                d_.next_[arriving.index()] = leaving;
-                d_.prev_[leaving.index()] = arriving;
-                d_.face_[h.index()] = FaceId(face_of_cycle_[cycle_of_slot_[s]]);
+                records[fill[h.index() >> kBucketBits]++] = Record{h, rg_.half_edge[rg_.clockwise(r, s)],
+                                                                   twin(rg_.half_edge[rg_.counterclockwise(r, s)]),
+                                                                   FaceId(face_of_cycle_[cycle_of_slot_[s]])};
                 out = std::min(out, h);
             }
-            d_.out_[v.index()] = out;
+            d_.out_[rg_.vertex[r].index()] = out;
         }
         release(cycle_of_slot_);
         release(rg_.half_edge);
         release(rg_.offset);
+
+        d_.origin_.resize(h_count);
+        for (Index k = 0; k < g_.edges.size(); ++k) {
+            d_.origin_[2 * k] = g_.edges[k].u;
+            d_.origin_[2 * k + 1] = g_.edges[k].v;
+        }
+        d_.next_.resize(h_count);
+        d_.prev_.resize(h_count);
+        d_.face_.resize(h_count);
+        for (const Record& x : records) {
+            d_.next_[twin(x.h).index()] = x.twin_next;
+            d_.prev_[x.h.index()] = x.prev;
+            d_.face_[x.h.index()] = x.face;
+        }
     }
 
     // One pass in face order; only faces with two or more holes or isolated
@@ -296,7 +362,7 @@ private:
     std::vector<Index> leftmost_;         // per component: the rank of its leftmost vertex
     std::vector<Index> below_;            // per component: the slot below its leftmost vertex, or kNoIndex
     std::size_t isolated_count_ = 0;      // components without edges
-    std::vector<char> cyclic_;            // per component: has a cycle (a bounded face), see find_components
+    std::vector<char> cyclic_;            // per component: has a cycle, see find_components; until find_cycles
     std::size_t cyclic_count_ = 0;        // components with a cycle
     std::vector<Index> next_slot_;        // per slot
     std::vector<Index> cycle_of_slot_;    // per slot

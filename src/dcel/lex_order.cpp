@@ -111,6 +111,7 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
             out.vertex_of_rank[v] = VertexId(v);
             out.rank_of_vertex[v] = v;
         }
+        out.point_of_rank = points;
         return out;
     }
 
@@ -125,9 +126,11 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
         begin = end;
     }
     std::vector<Keyed>().swap(scratch);
+    out.point_of_rank.resize(n);  // only now: the peak is while scratch lives
     for (Index r = 0; r < n; ++r) {
         out.vertex_of_rank[r] = VertexId(sorted[r].id);
         out.rank_of_vertex[sorted[r].id] = r;
+        out.point_of_rank[r] = sorted[r].p;
     }
     for (Index r = 1; r < n; ++r) {
         if (sorted[r - 1].p == sorted[r].p) {

@@ -19,6 +19,7 @@ namespace dcel {
 struct LexOrder {
     std::vector<VertexId> vertex_of_rank;  // the vertices in sweep order
     std::vector<Index> rank_of_vertex;     // the inverse permutation
+    std::vector<Point> point_of_rank;      // the points in sweep order (the sort has them at hand)
 };
 
 // Requires finite coordinates. Throws DuplicatePoint naming the first two

@@ -92,8 +92,7 @@ RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
     const auto n = static_cast<Index>(g.vertices.size());
     RankGraph rg;
     rg.vertex = std::move(lex.vertex_of_rank);
-    rg.point.resize(n);
-    for (Index r = 0; r < n; ++r) rg.point[r] = g.vertices[rg.vertex[r].index()];
+    rg.point = std::move(lex.point_of_rank);
 
     group_by_origin(g, std::move(lex.rank_of_vertex), rg);
 

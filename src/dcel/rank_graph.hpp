@@ -29,6 +29,8 @@ struct RankGraph {
     [[nodiscard]] Index degree(Index r) const { return offset[r + 1] - offset[r]; }
     // The slot just clockwise of slot s around its vertex r.
     [[nodiscard]] Index clockwise(Index r, Index s) const { return s == offset[r] ? offset[r + 1] - 1 : s - 1; }
+    // The slot just counterclockwise of slot s around its vertex r.
+    [[nodiscard]] Index counterclockwise(Index r, Index s) const { return s + 1 == offset[r + 1] ? offset[r] : s + 1; }
 
     // Rings up to this size are scanned; they sit next to their
     // neighbours' rings in memory, so a scan is a few cached reads.

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -59,14 +62,48 @@ inline void compare_swap(std::uint64_t& a, std::uint64_t& b) {
 
 // Batcher's odd-even merge sort for 8 keys: 19 comparators, no branches,
 // so the unpredictable comparisons of a ring's angles cost no mispredictions.
-// Its first 5 comparators (in this order) sort keys 0..3 on their own, which
-// is all a ring of degree <= 4 (a grid's) needs.
+// Its first 5 comparators sort keys 0..3 on their own, which is all a ring
+// of degree <= 4 (a grid's) needs. The keys are held in locals so that the
+// network runs in registers: through memory, each comparator would wait on
+// the previous one's stores.
 void sort8(std::uint64_t* k, std::size_t n) {
-    static constexpr unsigned char kPairs[19][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}, {1, 2}, {4, 5}, {6, 7},
-                                                    {4, 6}, {5, 7}, {5, 6}, {0, 4}, {1, 5}, {2, 6}, {3, 7},
-                                                    {2, 4}, {3, 5}, {1, 2}, {3, 4}, {5, 6}};
-    const std::size_t used = n <= 4 ? 5 : 19;
-    for (std::size_t c = 0; c < used; ++c) compare_swap(k[kPairs[c][0]], k[kPairs[c][1]]);
+    std::uint64_t k0 = k[0];
+    std::uint64_t k1 = k[1];
+    std::uint64_t k2 = k[2];
+    std::uint64_t k3 = k[3];
+    compare_swap(k0, k1);
+    compare_swap(k2, k3);
+    compare_swap(k0, k2);
+    compare_swap(k1, k3);
+    compare_swap(k1, k2);
+    if (n > 4) {
+        std::uint64_t k4 = k[4];
+        std::uint64_t k5 = k[5];
+        std::uint64_t k6 = k[6];
+        std::uint64_t k7 = k[7];
+        compare_swap(k4, k5);
+        compare_swap(k6, k7);
+        compare_swap(k4, k6);
+        compare_swap(k5, k7);
+        compare_swap(k5, k6);
+        compare_swap(k0, k4);
+        compare_swap(k1, k5);
+        compare_swap(k2, k6);
+        compare_swap(k3, k7);
+        compare_swap(k2, k4);
+        compare_swap(k3, k5);
+        compare_swap(k1, k2);
+        compare_swap(k3, k4);
+        compare_swap(k5, k6);
+        k[4] = k4;
+        k[5] = k5;
+        k[6] = k6;
+        k[7] = k7;
+    }
+    k[0] = k0;
+    k[1] = k1;
+    k[2] = k2;
+    k[3] = k3;
 }
 
 // The exact check after a guessed order: one orient2d per adjacent pair in
@@ -158,9 +195,12 @@ std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
             key[i] = (std::uint64_t{ring[i].quadrant} << 61U) | (guess << 5U) | i;
         }
         sort8(key, n);
-        RingEntry sorted[8];
-        for (std::size_t i = 0; i < n; ++i) sorted[i] = ring[key[i] & 31U];
-        std::copy(sorted, sorted + n, ring.begin());
+        // Raw storage: an array of RingEntry would be zeroed on every call.
+        static_assert(std::is_trivially_copyable_v<RingEntry>);
+        alignas(RingEntry) std::byte sorted[8 * sizeof(RingEntry)];
+        for (std::size_t i = 0; i < n; ++i)
+            std::memcpy(sorted + i * sizeof(RingEntry), &ring[key[i] & 31U], sizeof(RingEntry));
+        std::memcpy(ring.data(), sorted, n * sizeof(RingEntry));
     } else {
         double key[24];
         for (std::size_t i = 0; i < n; ++i) key[i] = approximate_angle(centre, ring[i]);
