@@ -315,9 +315,9 @@ private:
         release(rg_.offset);
 
         d_.origin_.resize(h_count);
-        for (Index k = 0; k < g_.edges.size(); ++k) {
-            d_.origin_[2 * k] = g_.edges[k].u;
-            d_.origin_[2 * k + 1] = g_.edges[k].v;
+        for (Index h = 0; h < h_count; h += 2) {  // half-edge 2k runs along edge k from u to v
+            d_.origin_[h] = g_.edges[h / 2].u;
+            d_.origin_[h + 1] = g_.edges[h / 2].v;
         }
         d_.next_.resize(h_count);
         d_.prev_.resize(h_count);
