@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "dcel/error.hpp"
+#include "dcel/huge_pages.hpp"
 #include "dcel/lex_order.hpp"
 #include "dcel/ring_sort.hpp"
 #include "dcel/status_list.hpp"
@@ -312,6 +313,29 @@ TEST(StatusList, AgreesWithAVectorUnderRandomEdits) {
                 ASSERT_EQ(found, k < ref.size() ? ref[k] : StatusList::kNone);
             }
         }
+    }
+}
+
+}  // namespace
+}  // namespace dcel
+
+namespace dcel {
+namespace {
+
+// The huge-page hint changes nothing a program can see: contents and sizes
+// stay as they are, for arrays smaller than a huge page, spanning several,
+// or not allocated at all.
+TEST(HugePages, TheHintLeavesArraysAsTheyAre) {
+    advise_huge_pages(nullptr, 0);
+    for (const std::size_t n : {std::size_t{0}, std::size_t{1}, std::size_t{1000}, std::size_t{3} << 20U}) {
+        std::vector<Index> v;
+        reserve_huge(v, n);
+        EXPECT_GE(v.capacity(), n);
+        EXPECT_TRUE(v.empty());
+        v.resize(n);
+        for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<Index>(i * 7);
+        advise_huge_pages(v.data(), v.size() * sizeof(Index));
+        for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(v[i], static_cast<Index>(i * 7)) << i;
     }
 }
 

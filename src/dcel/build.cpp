@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "dcel/geometry/predicates.hpp"
+#include "dcel/huge_pages.hpp"
 #include "dcel/input_checks.hpp"
 #include "dcel/lex_order.hpp"
 #include "dcel/rank_graph.hpp"
@@ -108,6 +109,7 @@ private:
     // out: find_cycles labels them without walking.
     void link_slots() {
         if (cyclic_count_ == 0) return;
+        reserve_huge(next_slot_, num_slots());
         next_slot_.assign(num_slots(), kNoIndex);
         for (Index r = 0; r < rg_.num_vertices(); ++r) {
             if (cyclic_[component_[r]] == 0) continue;
@@ -134,6 +136,7 @@ private:
     // ring order with no walk. Walking next() across a large tree jumps
     // between distant rings at every step, a chain of dependent cache misses.
     void find_cycles() {
+        reserve_huge(cycle_of_slot_, num_slots());
         cycle_of_slot_.assign(num_slots(), kNoIndex);
         const std::size_t edges = g_.edges.size();
         const std::size_t with_edges = leftmost_.size() - isolated_count_;
@@ -295,7 +298,9 @@ private:
         };
         constexpr unsigned kBucketBits = 13;  // 8192 ids: 128 KiB of the four arrays
         const Index h_count = num_slots();
-        std::vector<Record> records(h_count);
+        std::vector<Record> records;
+        reserve_huge(records, h_count);
+        records.resize(h_count);
         std::vector<Index> fill((h_count >> kBucketBits) + 1);
         for (Index b = 0; b < fill.size(); ++b) fill[b] = b << kBucketBits;
         d_.out_.assign(rg_.num_vertices(), HalfEdgeId());
@@ -314,6 +319,10 @@ private:
         release(rg_.half_edge);
         release(rg_.offset);
 
+        reserve_huge(d_.origin_, h_count);
+        reserve_huge(d_.next_, h_count);
+        reserve_huge(d_.prev_, h_count);
+        reserve_huge(d_.face_, h_count);
         d_.origin_.resize(h_count);
         for (Index h = 0; h < h_count; h += 2) {  // half-edge 2k runs along edge k from u to v
             d_.origin_[h] = g_.edges[h / 2].u;

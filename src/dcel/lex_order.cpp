@@ -7,6 +7,7 @@
 
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
+#include "dcel/huge_pages.hpp"
 
 namespace dcel {
 namespace {
@@ -115,9 +116,13 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
         return out;
     }
 
-    std::vector<Keyed> scratch(n);
+    std::vector<Keyed> scratch;
+    reserve_huge(scratch, n);
+    scratch.resize(n);
     for (Index v = 0; v < n; ++v) scratch[v] = Keyed{points[v], v};
-    std::vector<Keyed> sorted(n);
+    std::vector<Keyed> sorted;
+    reserve_huge(sorted, n);
+    sorted.resize(n);
     const std::vector<Index> ends = distribute(scratch.data(), scratch.data() + n, sorted.data(),
                                                [](const Keyed& k) { return k.p.x; });
     Index begin = 0;

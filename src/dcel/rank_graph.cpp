@@ -8,6 +8,7 @@
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/predicates.hpp"
+#include "dcel/huge_pages.hpp"
 #include "dcel/input_checks.hpp"
 #include "dcel/ring_sort.hpp"
 
@@ -50,11 +51,15 @@ void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& r
         Index target = 0;
         HalfEdgeId half_edge;
     };
-    std::vector<Record> records(2 * static_cast<std::size_t>(m));
+    std::vector<Record> records;
+    reserve_huge(records, 2 * static_cast<std::size_t>(m));
+    records.resize(2 * static_cast<std::size_t>(m));
     {
         // The ranks of each edge's ends, read once (scattered reads when the
         // input is in random order) and then streamed twice.
-        std::vector<std::pair<Index, Index>> ends(m);
+        std::vector<std::pair<Index, Index>> ends;
+        reserve_huge(ends, m);
+        ends.resize(m);
         std::vector<Index> start(groups + 1, 0);
         for (Index k = 0; k < m; ++k) {
             const Index ru = rank[g.edges[k].u.index()];
@@ -75,6 +80,8 @@ void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& r
     rg.offset.assign(n + 1, 0);
     for (const Record& r : records) ++rg.offset[r.origin + 1];
     for (Index r = 0; r < n; ++r) rg.offset[r + 1] += rg.offset[r];
+    reserve_huge(rg.half_edge, records.size());
+    reserve_huge(rg.target, records.size());
     rg.half_edge.resize(records.size());
     rg.target.resize(records.size());
     // Within a group, records keep their input order, as in a counting sort.
