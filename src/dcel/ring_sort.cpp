@@ -132,6 +132,7 @@ std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
     for (RingEntry& e : ring) e.quadrant = quadrant_of(centre, e.target);
     const ExactLess exact{centre};
     const std::size_t n = ring.size();
+    if (n < 2) return n;  // nothing to order (and an empty span's data() may be null)
     if (n == 2) {
         // Most vertices of chains, forests and polygons: the exact
         // comparator once (different quadrants need no orient2d at all).
