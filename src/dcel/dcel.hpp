@@ -114,6 +114,8 @@ public:
 
     // ---- Whole arrays, read-only (for dumps, validation and bulk queries)
     [[nodiscard]] const std::vector<Point>& points() const { return points_; }
+    [[nodiscard]] const std::vector<VertexId>& origins() const { return origin_; }
+    [[nodiscard]] const std::vector<HalfEdgeId>& next_links() const { return next_; }
 
 private:
     friend class DcelBuilder;  // build.cpp fills the arrays

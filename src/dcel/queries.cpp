@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "dcel/cycle_scan.hpp"
 #include "dcel/geometry/area.hpp"
 #include "dcel/geometry/exact_sum.hpp"
 
@@ -69,16 +70,8 @@ std::vector<FaceId> faces_around(const Dcel& d, VertexId v) {
 
 std::vector<std::vector<VertexId>> boundary_cycles(const Dcel& d) {
     std::vector<std::vector<VertexId>> cycles;
-    std::vector<char> seen(d.num_half_edges(), 0);
-    for (Index i = 0; i < d.num_half_edges(); ++i) {
-        if (seen[i] != 0) continue;
-        std::vector<VertexId> cycle;
-        for (const HalfEdgeId h : d.cycle(HalfEdgeId(i))) {
-            seen[h.index()] = 1;
-            cycle.push_back(d.origin(h));
-        }
-        cycles.push_back(std::move(cycle));
-    }
+    for_each_boundary_cycle(d,
+                            [&](std::span<const VertexId> origins) { cycles.emplace_back(origins.begin(), origins.end()); });
     return cycles;
 }
 

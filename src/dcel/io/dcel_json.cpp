@@ -1,7 +1,9 @@
 #include "dcel/io/dcel_json.hpp"
 
 #include <array>
+#include <span>
 
+#include "dcel/cycle_scan.hpp"
 #include "dcel/io/graph_json.hpp"
 
 namespace dcel::io {
@@ -108,8 +110,8 @@ void write_half_edge(JsonWriter& w, const HalfEdgeRecord& h) {
     w.raw('}');
 }
 
-template <class Id>
-void write_id_list(JsonWriter& w, const std::vector<Id>& ids) {
+template <class Ids>
+void write_id_list(JsonWriter& w, const Ids& ids) {
     w.raw('[');
     for (std::size_t i = 0; i < ids.size(); ++i) {
         if (i != 0) w.raw(", ");
@@ -167,24 +169,12 @@ std::string write_faces_of(const Dcel& d) {
     out.reserve(16 + d.num_half_edges() * 9);  // ids of up to 7 digits and ", "
     JsonWriter w(out);
     w.raw("{\"faces\": [");
-    std::vector<char> seen(d.num_half_edges(), 0);
     bool first = true;
-    // Cycles in order of their smallest half-edge, each from it, as
-    // boundary_cycles lists them.
-    for (Index i = 0; i < d.num_half_edges(); ++i) {
-        if (seen[i] != 0) continue;
+    for_each_boundary_cycle(d, [&](std::span<const VertexId> origins) {
         if (!first) w.raw(", ");
         first = false;
-        w.raw('[');
-        bool first_vertex = true;
-        for (const HalfEdgeId h : d.cycle(HalfEdgeId(i))) {
-            seen[h.index()] = 1;
-            if (!first_vertex) w.raw(", ");
-            first_vertex = false;
-            w.index(d.origin(h).index());
-        }
-        w.raw(']');
-    }
+        write_id_list(w, origins);
+    });
     w.raw("]}\n");
     w.flush();
     return out;
