@@ -19,35 +19,30 @@
 #include "dcel/edit.hpp"
 #include "dcel/queries.hpp"
 #include "dcel/validate.hpp"
+#include "support/check_helpers.hpp"
 
 namespace dcel {
 namespace {
 
-using Cycles = std::vector<std::vector<VertexId>>;
+using testing::faces_answer;  // the plain one-walk-at-a-time loop: the oracle
+using Cycles = check::FacesAnswer;
 
-Cycles walked_one_at_a_time(const Dcel& d) {
-    Cycles cycles;
-    std::vector<char> seen(d.num_half_edges(), 0);
-    for (Index i = 0; i < d.num_half_edges(); ++i) {
-        if (seen[i] != 0) continue;
-        std::vector<VertexId>& cycle = cycles.emplace_back();
-        HalfEdgeId h(i);
-        do {
-            seen[h.index()] = 1;
-            cycle.push_back(d.origin(h));
-            h = d.next(h);
-        } while (h != HalfEdgeId(i));
+Cycles as_indexes(const std::vector<std::vector<VertexId>>& cycles) {
+    Cycles out;
+    for (const auto& c : cycles) {
+        std::vector<Index>& o = out.emplace_back();
+        for (const VertexId v : c) o.push_back(v.index());
     }
-    return cycles;
+    return out;
 }
 
 // With prefetch_from = 0, the pipeline runs on these small inputs too.
 Cycles scanned(const Dcel& d, CycleScanStats* stats = nullptr, std::size_t prefetch_from = 0) {
-    Cycles cycles;
+    std::vector<std::vector<VertexId>> cycles;
     const CycleScanStats s = for_each_boundary_cycle(
         d, [&](std::span<const VertexId> origins) { cycles.emplace_back(origins.begin(), origins.end()); }, prefetch_from);
     if (stats != nullptr) *stats = s;
-    return cycles;
+    return as_indexes(cycles);
 }
 
 // Grid edges of a side x side block of new vertices, spaced 2 apart, at
@@ -103,13 +98,13 @@ TEST(CycleScan, MatchesOneWalkAtATimeOnNearAndFarBlocks) {
     for (unsigned seed = 0; seed < 4; ++seed) {
         std::mt19937 rng(seed);
         const Dcel d = build(mixed_graph(rng));
-        const Cycles expected = walked_one_at_a_time(d);
+        const Cycles expected = faces_answer(d);
         // One outer cycle a component with edges (7 vertices are isolated),
         // one cycle a bounded face.
         EXPECT_EQ(expected.size(), d.num_faces() + count_components(d) - 1 - 7);
         CycleScanStats stats;
         EXPECT_EQ(scanned(d, &stats), expected) << "seed " << seed;
-        EXPECT_EQ(boundary_cycles(d), expected);
+        EXPECT_EQ(as_indexes(boundary_cycles(d)), expected);
         // Both kinds of block, and a switch each way: the first block always
         // prefetches, the row-ordered grid's do not, the shuffled grid's do.
         EXPECT_GE(stats.blocks, 10U);
@@ -138,7 +133,7 @@ TEST(CycleScan, MatchesOneWalkAtATimeAfterEdits) {
     }
     const CheckResult violation = validate(d);
     ASSERT_FALSE(violation.has_value()) << violation->message;
-    const Cycles expected = walked_one_at_a_time(d);
+    const Cycles expected = faces_answer(d);
     EXPECT_EQ(scanned(d), expected);
 }
 
