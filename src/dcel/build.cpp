@@ -46,7 +46,7 @@ public:
         number_faces();                                                // O(E)
         write_half_edges();                                            // O(E)
         write_faces();                                                 // O(F + holes log holes)
-        d_.points_ = g_.vertices;                                      // O(V)
+        copy_points();                                                 // O(V)
         return std::move(d_);
     }
 
@@ -59,7 +59,7 @@ private:
     // their leftmost vertex.
     void find_components() {
         const Index n = rg_.num_vertices();
-        component_.resize(n);
+        assign_huge(component_, n);
         for (Index r = 0; r < n; ++r) component_[r] = r;
         auto root = [&](Index x) {
             while (component_[x] != x) x = component_[x] = component_[component_[x]];  // path halving
@@ -67,7 +67,7 @@ private:
         };
         // cyclic_[root]: an edge inside the root's tree has closed a cycle
         // (kept up to date on roots only, then moved to component numbers).
-        cyclic_.assign(n, 0);
+        assign_huge(cyclic_, n, char{0});
         for (Index r = 0; r < n; ++r) {
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
                 if (rg_.target[s] > r) continue;  // each edge once, from its right end
@@ -109,8 +109,7 @@ private:
     // out: find_cycles labels them without walking.
     void link_slots() {
         if (cyclic_count_ == 0) return;
-        reserve_huge(next_slot_, num_slots());
-        next_slot_.assign(num_slots(), kNoIndex);
+        assign_huge(next_slot_, num_slots(), kNoIndex);
         for (Index r = 0; r < rg_.num_vertices(); ++r) {
             if (cyclic_[component_[r]] == 0) continue;
             const bool r_small = rg_.small(r);
@@ -136,8 +135,7 @@ private:
     // ring order with no walk. Walking next() across a large tree jumps
     // between distant rings at every step, a chain of dependent cache misses.
     void find_cycles() {
-        reserve_huge(cycle_of_slot_, num_slots());
-        cycle_of_slot_.assign(num_slots(), kNoIndex);
+        assign_huge(cycle_of_slot_, num_slots(), kNoIndex);
         const std::size_t edges = g_.edges.size();
         const std::size_t with_edges = leftmost_.size() - isolated_count_;
         // Euler: a planar embedding has E - V + isolated + 2 * (components with edges) cycles.
@@ -189,13 +187,15 @@ private:
         std::vector<char> in_status;
         const bool skip = !options_.check_crossings && (leftmost_.size() <= 1 || cyclic_count_ == 0);
         if (!skip && !options_.check_crossings && cyclic_count_ < leftmost_.size()) {
-            in_status.resize(rg_.num_vertices());
+            assign_huge(in_status, rg_.num_vertices(), char{0});
             for (Index r = 0; r < rg_.num_vertices(); ++r) in_status[r] = cyclic_[component_[r]];
         }
         if (skip) return;
-        std::vector<char> wanted(rg_.num_vertices(), 0);
+        std::vector<char> wanted;
+        assign_huge(wanted, rg_.num_vertices(), char{0});
         for (const Index r : leftmost_) wanted[r] = 1;
-        std::vector<Index> below(rg_.num_vertices(), kNoIndex);
+        std::vector<Index> below;
+        assign_huge(below, rg_.num_vertices(), kNoIndex);
         sweep_ranks(rg_, g_, wanted, below, options_.check_crossings, in_status);
         for (Index c = 0; c < leftmost_.size(); ++c) below_[c] = below[leftmost_[c]];
     }
@@ -299,11 +299,10 @@ private:
         constexpr unsigned kBucketBits = 13;  // 8192 ids: 128 KiB of the four arrays
         const Index h_count = num_slots();
         std::vector<Record> records;
-        reserve_huge(records, h_count);
-        records.resize(h_count);
+        assign_huge(records, h_count);
         std::vector<Index> fill((h_count >> kBucketBits) + 1);
         for (Index b = 0; b < fill.size(); ++b) fill[b] = b << kBucketBits;
-        d_.out_.assign(rg_.num_vertices(), HalfEdgeId());
+        assign_huge(d_.out_, rg_.num_vertices());
         for (Index r = 0; r < rg_.num_vertices(); ++r) {
             HalfEdgeId out;
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
@@ -319,23 +318,25 @@ private:
         release(rg_.half_edge);
         release(rg_.offset);
 
-        reserve_huge(d_.origin_, h_count);
-        reserve_huge(d_.next_, h_count);
-        reserve_huge(d_.prev_, h_count);
-        reserve_huge(d_.face_, h_count);
-        d_.origin_.resize(h_count);
+        assign_huge(d_.origin_, h_count);
         for (Index h = 0; h < h_count; h += 2) {  // half-edge 2k runs along edge k from u to v
             d_.origin_[h] = g_.edges[h / 2].u;
             d_.origin_[h + 1] = g_.edges[h / 2].v;
         }
-        d_.next_.resize(h_count);
-        d_.prev_.resize(h_count);
-        d_.face_.resize(h_count);
+        assign_huge(d_.next_, h_count);
+        assign_huge(d_.prev_, h_count);
+        assign_huge(d_.face_, h_count);
         for (const Record& x : records) {
             d_.next_[twin(x.h).index()] = x.twin_next;
             d_.prev_[x.h.index()] = x.prev;
             d_.face_[x.h.index()] = x.face;
         }
+    }
+
+    // The result keeps its own copy of the points.
+    void copy_points() {
+        reserve_huge(d_.points_, g_.vertices.size());
+        d_.points_.assign(g_.vertices.begin(), g_.vertices.end());
     }
 
     // One pass in face order; only faces with two or more holes or isolated

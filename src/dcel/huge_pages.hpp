@@ -24,4 +24,11 @@ void reserve_huge(std::vector<T>& v, std::size_t n) {
     advise_huge_pages(v.data(), v.capacity() * sizeof(T));
 }
 
+// v.assign(n, value), on memory hinted as reserve_huge does.
+template <class T>
+void assign_huge(std::vector<T>& v, std::size_t n, const T& value = T{}) {
+    reserve_huge(v, n);
+    v.assign(n, value);
+}
+
 }  // namespace dcel

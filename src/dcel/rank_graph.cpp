@@ -52,14 +52,12 @@ void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& r
         HalfEdgeId half_edge;
     };
     std::vector<Record> records;
-    reserve_huge(records, 2 * static_cast<std::size_t>(m));
-    records.resize(2 * static_cast<std::size_t>(m));
+    assign_huge(records, 2 * static_cast<std::size_t>(m));
     {
         // The ranks of each edge's ends, read once (scattered reads when the
         // input is in random order) and then streamed twice.
         std::vector<std::pair<Index, Index>> ends;
-        reserve_huge(ends, m);
-        ends.resize(m);
+        assign_huge(ends, m);
         std::vector<Index> start(groups + 1, 0);
         for (Index k = 0; k < m; ++k) {
             const Index ru = rank[g.edges[k].u.index()];
@@ -77,15 +75,15 @@ void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& r
         }
     }
 
-    rg.offset.assign(n + 1, 0);
+    assign_huge(rg.offset, n + std::size_t{1}, Index{0});
     for (const Record& r : records) ++rg.offset[r.origin + 1];
     for (Index r = 0; r < n; ++r) rg.offset[r + 1] += rg.offset[r];
-    reserve_huge(rg.half_edge, records.size());
-    reserve_huge(rg.target, records.size());
-    rg.half_edge.resize(records.size());
-    rg.target.resize(records.size());
+    assign_huge(rg.half_edge, records.size());
+    assign_huge(rg.target, records.size());
     // Within a group, records keep their input order, as in a counting sort.
-    std::vector<Index> fill(rg.offset.begin(), rg.offset.end() - 1);
+    std::vector<Index> fill;
+    reserve_huge(fill, n);
+    fill.assign(rg.offset.begin(), rg.offset.end() - 1);
     for (const Record& r : records) {
         const Index s = fill[r.origin]++;
         rg.half_edge[s] = r.half_edge;
