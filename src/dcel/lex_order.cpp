@@ -32,19 +32,19 @@ void insertion_sort(Keyed* first, const Keyed* last) {
     }
 }
 
-// Distributes [first, last) into `out` (last - first elements), in about
+// Distributes the n elements source(0) .. source(n - 1) into `out`, in about
 // half as many buckets as elements by the coordinate `key` selects, through
 // floor((c - min) * scale): every IEEE operation in it is monotone, so
 // c1 <= c2 gives bucket(c1) <= bucket(c2) and the buckets come in exact
-// order. Returns the bucket ends.
-template <class Key>
-std::vector<Index> distribute(const Keyed* first, const Keyed* last, Keyed* out, Key key) {
-    const auto n = static_cast<Index>(last - first);
-    double lo = key(*first);
+// order. Within a bucket the elements keep their source order. Returns the
+// bucket ends.
+template <class Source, class Key>
+std::vector<Index> distribute(Index n, Source source, Keyed* out, Key key) {
+    double lo = key(source(0));
     double hi = lo;
-    for (const Keyed* p = first; p != last; ++p) {
-        lo = std::min(lo, key(*p));
-        hi = std::max(hi, key(*p));
+    for (Index i = 0; i < n; ++i) {
+        lo = std::min(lo, key(source(i)));
+        hi = std::max(hi, key(source(i)));
     }
     const Index buckets = std::max<Index>(1, n / 2);
     // A range that overflows, or one so small that scale overflows, puts
@@ -56,10 +56,14 @@ std::vector<Index> distribute(const Keyed* first, const Keyed* last, Keyed* out,
         const double t = (key(k) - lo) * scale;  // in [0, buckets] up to rounding, never NaN
         return t < static_cast<double>(buckets) ? static_cast<Index>(t) : buckets - 1;
     };
-    std::vector<Index> end(buckets + 1, 0);
-    for (const Keyed* p = first; p != last; ++p) ++end[bucket_of(*p) + 1];
+    std::vector<Index> end;
+    assign_huge(end, buckets + std::size_t{1}, Index{0});
+    for (Index i = 0; i < n; ++i) ++end[bucket_of(source(i)) + 1];
     for (Index b = 0; b < buckets; ++b) end[b + 1] += end[b];
-    for (const Keyed* p = first; p != last; ++p) out[end[bucket_of(*p)]++] = *p;
+    for (Index i = 0; i < n; ++i) {
+        const Keyed k = source(i);
+        out[end[bucket_of(k)]++] = k;
+    }
     end.pop_back();  // end[b] is now the end of bucket b
     return end;
 }
@@ -69,7 +73,7 @@ std::vector<Index> distribute(const Keyed* first, const Keyed* last, Keyed* out,
 // grid's column, row-major, comes bottom to top) is left as it is; a large
 // one whose points share one x (a vertical chain in any order) is bucketed
 // again by y; anything else large goes to std::sort.
-void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
+void sort_bucket(Keyed* first, Keyed* last) {
     if (last - first <= 16) {
         insertion_sort(first, last);
         return;
@@ -80,8 +84,10 @@ void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
         std::sort(first, last, keyed_less);
         return;
     }
-    const std::vector<Index> ends = distribute(first, last, scratch, [](const Keyed& k) { return k.p.y; });
-    std::copy(scratch, scratch + (last - first), first);  // NOLINT(readability-suspicious-call-argument): back from scratch
+    const auto n = static_cast<Index>(last - first);
+    const std::vector<Keyed> copy(first, last);
+    const std::vector<Index> ends = distribute(
+        n, [&](Index i) { return copy[i]; }, first, [](const Keyed& k) { return k.p.y; });
     Index begin = 0;
     for (const Index end : ends) {
         if (end - begin > 16) {
@@ -98,8 +104,8 @@ void sort_bucket(Keyed* first, Keyed* last, Keyed* scratch) {
 LexOrder lex_order_checked(const std::vector<Point>& points) {
     const auto n = static_cast<Index>(points.size());
     LexOrder out;
-    out.vertex_of_rank.resize(n);
-    out.rank_of_vertex.resize(n);
+    assign_huge(out.vertex_of_rank, n);
+    assign_huge(out.rank_of_vertex, n);
     if (n == 0) return out;
 
     // Points that come already in strictly increasing order (a chain or a
@@ -116,22 +122,21 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
         return out;
     }
 
-    std::vector<Keyed> scratch;
-    reserve_huge(scratch, n);
-    scratch.resize(n);
-    for (Index v = 0; v < n; ++v) scratch[v] = Keyed{points[v], v};
+    // The x pass reads the points where they are: no copy of them as Keyed.
     std::vector<Keyed> sorted;
-    reserve_huge(sorted, n);
-    sorted.resize(n);
-    const std::vector<Index> ends = distribute(scratch.data(), scratch.data() + n, sorted.data(),
-                                               [](const Keyed& k) { return k.p.x; });
+    assign_huge(sorted, n);
+    const std::vector<Index> ends = distribute(
+        n,
+        [&](Index v) {
+            return Keyed{points[v], v};
+        },
+        sorted.data(), [](const Keyed& k) { return k.p.x; });
     Index begin = 0;
     for (const Index end : ends) {
-        sort_bucket(sorted.data() + begin, sorted.data() + end, scratch.data());
+        sort_bucket(sorted.data() + begin, sorted.data() + end);
         begin = end;
     }
-    std::vector<Keyed>().swap(scratch);
-    out.point_of_rank.resize(n);  // only now: the peak is while scratch lives
+    assign_huge(out.point_of_rank, n);  // only now: the peak is while the bucket ends live
     for (Index r = 0; r < n; ++r) {
         out.vertex_of_rank[r] = VertexId(sorted[r].id);
         out.rank_of_vertex[sorted[r].id] = r;
