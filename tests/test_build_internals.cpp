@@ -279,24 +279,39 @@ TEST(RingSort, RingsOfTwoInEveryArrangement) {
 
 TEST(StatusList, AgreesWithAVectorUnderRandomEdits) {
     std::mt19937_64 rng(10);
-    for (const Index capacity : {1U, 7U, 100U, 5000U}) {
+    for (const Index capacity : {1U, 7U, 100U, 3000U}) {
         StatusList list(capacity);
+        const int phase = 4 * static_cast<int>(capacity) + 50;
         std::vector<Index> ref;  // bottom to top
+        std::vector<Index> erased;
+        std::size_t most = 0;  // the most nodes in the list at once
         for (int step = 0; step < 20000; ++step) {
-            const Index node = std::uniform_int_distribution<Index>(0, capacity - 1)(rng);
-            const auto at = std::find(ref.begin(), ref.end(), node);
-            if (at != ref.end()) {
+            // Grow to the capacity, shrink, grow again: ids must be reused.
+            const bool grow = (step / phase) % 2 == 0;
+            const bool insert = ref.empty() || (ref.size() < capacity && (rng() % 4 != 0) == grow);
+            if (!insert) {
+                const std::size_t pos = std::uniform_int_distribution<std::size_t>(0, ref.size() - 1)(rng);
+                const Index node = ref[pos];
                 ASSERT_TRUE(list.contains(node));
                 list.erase(node);
-                ref.erase(at);
-            } else {
                 ASSERT_FALSE(list.contains(node));
+                ref.erase(ref.begin() + static_cast<std::ptrdiff_t>(pos));
+                erased.push_back(node);
+            } else {
                 // Above a random member, or at the bottom.
                 const std::size_t pos = std::uniform_int_distribution<std::size_t>(0, ref.size())(rng);
                 const Index below = pos == 0 ? StatusList::kNone : ref[pos - 1];
-                list.insert_above(below, node);
+                const Index node = list.insert_above(below);
+                ASSERT_NE(node, StatusList::kNone);
+                ASSERT_EQ(std::find(ref.begin(), ref.end(), node), ref.end()) << "id " << node << " handed out twice";
+                if (!erased.empty()) {
+                    ASSERT_EQ(node, erased.back()) << "the last erased id is reused first";
+                    erased.pop_back();
+                }
                 ref.insert(ref.begin() + static_cast<std::ptrdiff_t>(pos), node);
+                most = std::max(most, ref.size());
             }
+            ASSERT_EQ(list.ids_made(), most) << "ids are made only when none is free";
             if (step % 97 != 0) continue;
             // Walk both ways, and search every partition point.
             std::vector<Index> up;
@@ -306,13 +321,14 @@ TEST(StatusList, AgreesWithAVectorUnderRandomEdits) {
             for (Index x = list.last(); x != StatusList::kNone; x = list.prev(x)) down.push_back(x);
             std::reverse(down.begin(), down.end());
             ASSERT_EQ(down, ref);
+            std::vector<char> is_below(list.ids_made() + std::size_t{1}, 0);
             for (std::size_t k = 0; k <= ref.size(); ++k) {
-                std::vector<char> is_below(capacity, 0);
-                for (std::size_t i = 0; i < k; ++i) is_below[ref[i]] = 1;
+                if (k > 0) is_below[ref[k - 1]] = 1;  // the first k nodes are below
                 const Index found = list.first_not_below([&](Index x) { return is_below[x] != 0; });
                 ASSERT_EQ(found, k < ref.size() ? ref[k] : StatusList::kNone);
             }
         }
+        EXPECT_EQ(list.ids_made(), capacity) << "the list filled up at least once";
     }
 }
 

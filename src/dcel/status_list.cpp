@@ -1,5 +1,7 @@
 #include "dcel/status_list.hpp"
 
+#include "dcel/huge_pages.hpp"
+
 namespace dcel {
 namespace {
 
@@ -13,30 +15,41 @@ std::uint64_t mix(std::uint64_t x) {
 
 }  // namespace
 
-StatusList::StatusList(Index capacity)
-    : head_(capacity),
-      next0_(capacity + std::size_t{1}),
-      prev0_(capacity + std::size_t{1}, kNone),
-      level_(capacity + std::size_t{1}),
-      upper_index_(capacity + std::size_t{1}, 0) {
-    std::size_t upper_size = 0;
-    for (Index i = 0; i < capacity; ++i) {
-        std::uint64_t bits = mix(i);
-        int level = 0;
-        while (level < kMaxLevel && (bits & 3U) == 0) {  // each level with probability 1/4
-            ++level;
-            bits >>= 2U;
-        }
-        level_[i] = static_cast<std::uint8_t>(level);
-        upper_index_[i] = static_cast<Index>(upper_size);
-        upper_size += 2 * static_cast<std::size_t>(level);
+StatusList::StatusList(Index capacity) {
+    // Reserved, so ids never move and no array is copied as the list grows;
+    // pages are touched only as nodes are made.
+    const std::size_t nodes = capacity + std::size_t{1};
+    reserve_huge(next0_, nodes);
+    reserve_huge(prev0_, nodes);
+    reserve_huge(level_, nodes);
+    reserve_huge(upper_index_, nodes);
+    reserve_huge(upper_, 2 * static_cast<std::size_t>(kMaxLevel) + nodes + 64);  // 2/3 of a link a node expected
+    next0_.push_back(kHead);
+    prev0_.push_back(kHead);
+    level_.push_back(kMaxLevel);
+    upper_index_.push_back(0);
+    upper_.assign(2 * static_cast<std::size_t>(kMaxLevel), kHead);
+}
+
+Index StatusList::take_id() {
+    if (free_ != kNone) {
+        const Index node = free_;
+        free_ = next0_[node];
+        return node;
     }
-    level_[head_] = kMaxLevel;
-    upper_index_[head_] = static_cast<Index>(upper_size);
-    upper_size += 2 * static_cast<std::size_t>(kMaxLevel);
-    upper_.assign(upper_size, head_);
-    next0_[head_] = head_;
-    prev0_[head_] = head_;
+    const auto node = static_cast<Index>(prev0_.size());
+    std::uint64_t bits = mix(node);
+    int level = 0;
+    while (level < kMaxLevel && (bits & 3U) == 0) {  // each level with probability 1/4
+        ++level;
+        bits >>= 2U;
+    }
+    next0_.push_back(kNone);
+    prev0_.push_back(kNone);
+    level_.push_back(static_cast<std::uint8_t>(level));
+    upper_index_.push_back(static_cast<Index>(upper_.size()));
+    upper_.resize(upper_.size() + 2 * static_cast<std::size_t>(level), kNone);
+    return node;
 }
 
 void StatusList::set_next(Index node, int level, Index to) {
@@ -55,8 +68,9 @@ void StatusList::set_prev(Index node, int level, Index to) {
     }
 }
 
-void StatusList::insert_above(Index below, Index node) {
-    Index p = below == kNone ? head_ : below;
+Index StatusList::insert_above(Index below) {
+    const Index node = take_id();
+    Index p = below == kNone ? kHead : below;
     const int top = level_[node];
     for (int level = 0; level <= top; ++level) {
         // p becomes the nearest node at or below `below` that reaches this
@@ -69,6 +83,7 @@ void StatusList::insert_above(Index below, Index node) {
         set_next(node, level, n);
         set_prev(n, level, node);
     }
+    return node;
 }
 
 void StatusList::erase(Index node) {
@@ -80,6 +95,8 @@ void StatusList::erase(Index node) {
         set_prev(n, level, p);
     }
     prev0_[node] = kNone;
+    next0_[node] = free_;
+    free_ = node;
 }
 
 }  // namespace dcel

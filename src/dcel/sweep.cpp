@@ -8,6 +8,7 @@
 #include "dcel/format.hpp"
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/geometry/segments.hpp"
+#include "dcel/huge_pages.hpp"
 #include "dcel/status_list.hpp"
 
 namespace dcel {
@@ -51,13 +52,10 @@ struct Span {
 class Sweep {
 public:
     Sweep(const RankGraph& rg, const PlanarGraph& g, bool check, std::span<const char> in_status)
-        : rg_(rg),
-          g_(g),
-          check_(check),
-          in_status_(in_status),
-          node_of_slot_(rg.num_slots(), kNoIndex),
-          spans_(g.edges.size()),
-          status_(static_cast<Index>(g.edges.size())) {}
+        : rg_(rg), g_(g), check_(check), in_status_(in_status), status_(static_cast<Index>(g.edges.size())) {
+        assign_huge(node_of_slot_, rg.num_slots(), kNoIndex);
+        reserve_huge(spans_, g.edges.size() + std::size_t{1});  // touched only up to the ids made
+    }
 
     // One event per vertex, in rank order: O(degree) list work, plus, when
     // no edge arrives from the left, a walk of a few steps from the previous
@@ -105,6 +103,9 @@ private:
             if (rg_.target[s] >= r) continue;
             const Index e = node_of_slot_[home_of_ending(r, s)];
             if (e == kNoIndex || !status_.contains(e)) continue;
+            // Each edge leaves once, at its right end, so the node recorded for
+            // it is still its own, though ids are reused.
+            assert(spans_[e].right == r && spans_[e].left == rg_.target[s]);
             if (!any_ending) {
                 Index lo = e;
                 Index hi = e;
@@ -148,10 +149,10 @@ private:
         auto insert_starting = [&](Index s) {
             if (rg_.target[s] < r) return;
             const Index edge = edge_of(rg_.half_edge[s]).index();
-            const Index e = next_node_++;
+            const Index e = status_.insert_above(last);
             node_of_slot_[home_of_starting(r, s)] = e;
+            if (e >= spans_.size()) spans_.resize(e + std::size_t{1});
             spans_[e] = Span{r, rg_.target[s], s, edge};
-            status_.insert_above(last, e);
             if (lowest_new == StatusList::kNone) lowest_new = e;
             last = e;
         };
@@ -260,17 +261,17 @@ private:
         }
     }
 
-    // Status nodes are numbered in the order edges enter it, so that the
-    // nodes of neighbouring edges sit close in memory whatever the input
-    // order.
+    // Status node ids are handed out by the list, which reuses the ids of
+    // erased nodes: the spans and the list touch memory for the most edges
+    // active at once, and recently active edges sit close in memory whatever
+    // the input order.
     const RankGraph& rg_;
     const PlanarGraph& g_;
     bool check_;
     std::span<const char> in_status_;  // empty: every edge enters the status
     std::vector<Index> node_of_slot_;  // see home_of_starting
-    std::vector<Span> spans_;          // by node
+    std::vector<Span> spans_;          // by node id
     StatusList status_;
-    Index next_node_ = 0;
     Index hint_ = StatusList::kNone;  // a node near the previous vertex, see near_hint
 };
 
