@@ -112,6 +112,25 @@ RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
         const Index first = rg.offset[r];
         const Index degree = rg.offset[r + 1] - first;
         if (degree < 2) continue;
+        if (degree == 2) {  // in place: no round trip through RingEntry
+            const Index t0 = rg.target[first];
+            const Index t1 = rg.target[first + 1];
+            const HalfEdgeId h0 = rg.half_edge[first];
+            const HalfEdgeId h1 = rg.half_edge[first + 1];
+            const PairOrder order = order_pair(rg.point[r], rg.point[t0], h0, rg.point[t1], h1);
+            if (order.swap) {
+                rg.target[first] = t1;
+                rg.target[first + 1] = t0;
+                rg.half_edge[first] = h1;
+                rg.half_edge[first + 1] = h0;
+            }
+            if (order.same_direction && rg.vertex[r] < bad_vertex) {
+                bad_vertex = rg.vertex[r];
+                bad_a = std::min(h0, h1);
+                bad_b = std::max(h0, h1);
+            }
+            continue;
+        }
         ring.resize(degree);
         for (Index i = 0; i < degree; ++i) {
             // Field by field: building a whole RingEntry on the stack and

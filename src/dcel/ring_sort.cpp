@@ -134,17 +134,9 @@ std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
     const std::size_t n = ring.size();
     if (n < 2) return n;  // nothing to order (and an empty span's data() may be null)
     if (n == 2) {
-        // Most vertices of chains, forests and polygons: the exact
-        // comparator once (different quadrants need no orient2d at all).
-        if (ring[0].quadrant != ring[1].quadrant) {
-            if (ring[1].quadrant < ring[0].quadrant) std::swap(ring[0], ring[1]);
-            return 2;
-        }
-        const Sign s = orient2d(centre, ring[0].target, ring[1].target);  // positive: ring[0] first
-        if (s == Sign::Negative || (s == Sign::Zero && ring[1].half_edge < ring[0].half_edge)) {
-            std::swap(ring[0], ring[1]);
-        }
-        return s == Sign::Zero ? 0 : 2;
+        const PairOrder order = order_pair(centre, ring[0].target, ring[0].half_edge, ring[1].target, ring[1].half_edge);
+        if (order.swap) std::swap(ring[0], ring[1]);
+        return order.same_direction ? 0 : 2;
     }
     if (n > 24) {
         // Large rings (a star's centre): std::sort on integer keys (quadrant,

@@ -17,6 +17,7 @@
 #include <span>
 
 #include "dcel/geometry/point.hpp"
+#include "dcel/geometry/predicates.hpp"
 #include "dcel/ids.hpp"
 
 namespace dcel {
@@ -33,6 +34,22 @@ struct RingEntry {
     if (p.y > centre.y) return p.x > centre.x ? 0 : 1;
     if (p.y < centre.y) return p.x < centre.x ? 2 : 3;
     return p.x > centre.x ? 0 : 2;
+}
+
+// A ring of two, a and b (most vertices of chains, polygons and trees), in
+// sort_ring's order: whether they swap, and whether they point the same
+// way (then the smaller half-edge id comes first). Targets differ from
+// centre. Different quadrants need no orient2d at all.
+struct PairOrder {
+    bool swap = false;
+    bool same_direction = false;
+};
+[[nodiscard]] inline PairOrder order_pair(Point centre, Point a, HalfEdgeId ha, Point b, HalfEdgeId hb) {
+    const unsigned char qa = quadrant_of(centre, a);
+    const unsigned char qb = quadrant_of(centre, b);
+    if (qa != qb) return {qb < qa, false};
+    const Sign s = orient2d(centre, a, b);  // positive: a first
+    return {s == Sign::Negative || (s == Sign::Zero && hb < ha), s == Sign::Zero};
 }
 
 // Fills each entry's quadrant and sorts; returns first_same_direction of the
