@@ -9,6 +9,8 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
@@ -430,6 +432,92 @@ TEST(BuildOptions, LargeShuffledGraphSpansSeveralWriteBuckets) {
     ASSERT_FALSE(unchecked_violation.has_value()) << unchecked_violation->message;
     EXPECT_EQ(face_shapes(unchecked), face_shapes(d));
     EXPECT_EQ(d.num_vertices() + d.num_faces(), d.num_edges() + 1 + components_by_bfs(g));
+}
+
+// A face as points, independent of vertex, half-edge and face ids: its
+// outer cycle and holes as canonical point cycles (holes sorted), and its
+// isolated points sorted.
+using PointCycle = std::vector<std::pair<double, double>>;
+struct GeometricFace {
+    PointCycle outer;
+    std::vector<PointCycle> holes;
+    std::vector<std::pair<double, double>> isolated;
+    friend bool operator==(const GeometricFace&, const GeometricFace&) = default;
+    friend bool operator<(const GeometricFace& a, const GeometricFace& b) {
+        return std::tie(a.outer, a.holes, a.isolated) < std::tie(b.outer, b.holes, b.isolated);
+    }
+};
+
+PointCycle point_cycle(const Dcel& d, HalfEdgeId start) {
+    PointCycle c;
+    for (const HalfEdgeId h : d.cycle(start)) c.emplace_back(d.point(d.origin(h)).x, d.point(d.origin(h)).y);
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());  // points on a cycle may repeat; fine here
+    return c;
+}
+
+std::vector<GeometricFace> geometric_faces(const Dcel& d) {
+    std::vector<GeometricFace> faces;
+    for (Index f = 0; f < d.num_faces(); ++f) {
+        GeometricFace face;
+        if (!d.is_unbounded(FaceId(f))) face.outer = point_cycle(d, d.outer(FaceId(f)));
+        for (const HalfEdgeId h : d.inner(FaceId(f))) face.holes.push_back(point_cycle(d, h));
+        for (const VertexId v : d.isolated(FaceId(f))) face.isolated.emplace_back(d.point(v).x, d.point(v).y);
+        std::sort(face.holes.begin(), face.holes.end());
+        std::sort(face.isolated.begin(), face.isolated.end());
+        faces.push_back(std::move(face));
+    }
+    std::sort(faces.begin(), faces.end());
+    return faces;
+}
+
+// Graphs whose half-edge ids follow the sweep (nested squares listed from
+// the outside in, a path inside them) are written to the DCEL arrays in
+// slot order, without the buckets (write_half_edges); the same graph with
+// shuffled ids takes the buckets. Both must give the same faces, pass
+// validate() in both modes, and satisfy Euler's formula.
+TEST(BuildOptions, GraphInSweepOrderAndItsShuffleGiveTheSameFaces) {
+    constexpr Index kSquares = 2100;  // 8400 edges: more than two write buckets of half-edges
+    std::vector<Point> points;
+    std::vector<std::pair<Index, Index>> edges;
+    for (Index k = kSquares; k >= 1; --k) {
+        const auto r = static_cast<double>(k + 10);
+        const auto first = static_cast<Index>(points.size());
+        for (const Point p : {Point{-r, -r}, Point{r, -r}, Point{r, r}, Point{-r, r}}) points.push_back(p);
+        for (Index i = 0; i < 4; ++i) edges.emplace_back(first + i, first + (i + 1) % 4);
+    }
+    const auto path = static_cast<Index>(points.size());  // a path of 9 edges inside the innermost square
+    for (Index i = 0; i < 10; ++i) points.push_back({-5.0 + i, static_cast<double>(i % 3)});
+    for (Index i = 0; i + 1 < 10; ++i) edges.emplace_back(path + i, path + i + 1);
+    points.push_back({0.0, -7.0});     // isolated, inside the innermost square
+    points.push_back({-5000.0, 0.0});  // isolated, outside everything
+    const PlanarGraph ordered = graph(points, edges);
+    ASSERT_GT(2 * ordered.edges.size(), 2U * 8192U);
+
+    std::mt19937 rng(11);
+    std::vector<Index> new_id(points.size());
+    std::iota(new_id.begin(), new_id.end(), 0);
+    std::shuffle(new_id.begin(), new_id.end(), rng);
+    std::vector<Point> shuffled_points(points.size());
+    for (Index v = 0; v < points.size(); ++v) shuffled_points[new_id[v]] = points[v];
+    for (auto& [u, v] : edges) {
+        u = new_id[u];
+        v = new_id[v];
+        if (rng() % 2 != 0) std::swap(u, v);
+    }
+    std::shuffle(edges.begin(), edges.end(), rng);
+    const PlanarGraph shuffled = graph(shuffled_points, edges);
+
+    const std::vector<GeometricFace> expected = geometric_faces(build(shuffled));
+    ASSERT_EQ(expected.size(), kSquares + 1U);  // the unbounded face and one ring face per square
+    for (const bool check : {true, false}) {
+        for (const PlanarGraph* g : {&ordered, &shuffled}) {
+            const Dcel d = build(*g, {.check_crossings = check});
+            const auto violation = validate(d);
+            ASSERT_FALSE(violation.has_value()) << violation->message;
+            EXPECT_EQ(geometric_faces(d), expected);
+            EXPECT_EQ(d.num_vertices() + d.num_faces(), d.num_edges() + 1 + components_by_bfs(*g));
+        }
+    }
 }
 
 TEST(BuildOptions, UncheckedModeSurvivesCrossings) {

@@ -283,54 +283,91 @@ private:
     //
     // The DCEL arrays are indexed by input half-edge ids, which may be in
     // any order relative to the rings: written directly, every slot would
-    // cost four cache misses on shuffled input. So what each slot gives is
-    // first written, in ring order, to one of about H / 8192 buckets of
-    // consecutive half-edge ids (sequential streams), and then applied bucket
-    // by bucket, each bucket's lines of the four arrays in cache. Every id
-    // occurs once, so bucket b is exactly the records for ids b * 8192 ..
-    // and needs no counting pass. Origins come from the input edges in order.
+    // cost four cache misses on shuffled input. So unless the ids follow
+    // the slots (slots_follow_ids), what each slot gives is first written,
+    // in ring order, to one of about H / 8192 buckets of consecutive
+    // half-edge ids (sequential streams), and then applied bucket by bucket,
+    // each bucket's lines of the four arrays in cache. Every id occurs once,
+    // so bucket b is exactly the records for ids b * 8192 .. and needs no
+    // counting pass. Origins come from the input edges in order.
     void write_half_edges() {
-        struct Record {
-            HalfEdgeId h;
-            HalfEdgeId twin_next;  // next(twin(h))
-            HalfEdgeId prev;       // prev(h)
-            FaceId face;           // face(h)
-        };
-        constexpr unsigned kBucketBits = 13;  // 8192 ids: 128 KiB of the four arrays
         const Index h_count = num_slots();
-        std::vector<Record> records;
-        assign_huge(records, h_count);
-        std::vector<Index> fill((h_count >> kBucketBits) + 1);
-        for (Index b = 0; b < fill.size(); ++b) fill[b] = b << kBucketBits;
         assign_huge(d_.out_, rg_.num_vertices());
-        for (Index r = 0; r < rg_.num_vertices(); ++r) {
-            HalfEdgeId out;
-            for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
-                const HalfEdgeId h = rg_.half_edge[s];
-                records[fill[h.index() >> kBucketBits]++] = Record{h, rg_.half_edge[rg_.clockwise(r, s)],
-                                                                   twin(rg_.half_edge[rg_.counterclockwise(r, s)]),
-                                                                   FaceId(face_of_cycle_[cycle_of_slot_[s]])};
-                out = std::min(out, h);
-            }
-            d_.out_[rg_.vertex[r].index()] = out;
+        if (slots_follow_ids()) {
+            assign_huge(d_.next_, h_count);
+            assign_huge(d_.prev_, h_count);
+            assign_huge(d_.face_, h_count);
+            for_each_slot([&](const HalfEdgeRecord& x) { apply(x); });
+            release_slot_arrays();
+        } else {
+            constexpr unsigned kBucketBits = 13;  // 8192 ids: 128 KiB of the four arrays
+            std::vector<HalfEdgeRecord> records;
+            assign_huge(records, h_count);
+            std::vector<Index> fill((h_count >> kBucketBits) + 1);
+            for (Index b = 0; b < fill.size(); ++b) fill[b] = b << kBucketBits;
+            for_each_slot([&](const HalfEdgeRecord& x) { records[fill[x.h.index() >> kBucketBits]++] = x; });
+            release_slot_arrays();
+            assign_huge(d_.next_, h_count);
+            assign_huge(d_.prev_, h_count);
+            assign_huge(d_.face_, h_count);
+            for (const HalfEdgeRecord& x : records) apply(x);
         }
-        release(cycle_of_slot_);
-        release(rg_.half_edge);
-        release(rg_.offset);
-
         assign_huge(d_.origin_, h_count);
         for (Index h = 0; h < h_count; h += 2) {  // half-edge 2k runs along edge k from u to v
             d_.origin_[h] = g_.edges[h / 2].u;
             d_.origin_[h + 1] = g_.edges[h / 2].v;
         }
-        assign_huge(d_.next_, h_count);
-        assign_huge(d_.prev_, h_count);
-        assign_huge(d_.face_, h_count);
-        for (const Record& x : records) {
-            d_.next_[twin(x.h).index()] = x.twin_next;
-            d_.prev_[x.h.index()] = x.prev;
-            d_.face_[x.h.index()] = x.face;
+    }
+
+    // What one slot gives the DCEL arrays.
+    struct HalfEdgeRecord {
+        HalfEdgeId h;
+        HalfEdgeId twin_next;  // next(twin(h))
+        HalfEdgeId prev;       // prev(h)
+        FaceId face;           // face(h)
+    };
+
+    // Calls emit with each slot's record, in ring order, and sets d_.out_.
+    template <class Emit>
+    void for_each_slot(Emit emit) {
+        for (Index r = 0; r < rg_.num_vertices(); ++r) {
+            HalfEdgeId out;
+            for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
+                const HalfEdgeId h = rg_.half_edge[s];
+                emit(HalfEdgeRecord{h, rg_.half_edge[rg_.clockwise(r, s)], twin(rg_.half_edge[rg_.counterclockwise(r, s)]),
+                                    FaceId(face_of_cycle_[cycle_of_slot_[s]])});
+                out = std::min(out, h);
+            }
+            d_.out_[rg_.vertex[r].index()] = out;
         }
+    }
+
+    void apply(const HalfEdgeRecord& x) {
+        d_.next_[twin(x.h).index()] = x.twin_next;
+        d_.prev_[x.h.index()] = x.prev;
+        d_.face_[x.h.index()] = x.face;
+    }
+
+    void release_slot_arrays() {
+        release(cycle_of_slot_);
+        release(rg_.half_edge);
+        release(rg_.offset);
+    }
+
+    // Whether consecutive slots mostly hold nearby half-edge ids (chains,
+    // polygons, nested shapes, edges listed along the sweep): then writing
+    // the arrays in slot order touches a few lines at a time, and the
+    // buckets would only cost their 16 bytes per half-edge. O(E), one
+    // sequential read.
+    [[nodiscard]] bool slots_follow_ids() const {
+        constexpr Index kNear = 64;  // ids: four cache lines of an array
+        Index far = 0;
+        for (Index s = 1; s < num_slots(); ++s) {
+            const Index a = rg_.half_edge[s - 1].index();
+            const Index b = rg_.half_edge[s].index();
+            far += (a > b ? a - b : b - a) > kNear ? 1 : 0;
+        }
+        return far <= num_slots() / 16;
     }
 
     // The result keeps its own copy of the points.
