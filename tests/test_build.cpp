@@ -377,6 +377,23 @@ TEST(BuildOptions, UncheckedModeBuildsTheSameFacesOnValidInput) {
     EXPECT_EQ(face_shapes(build(g, {.check_crossings = false})), face_shapes(build(g)));
 }
 
+// The graph with its vertex ids, edge order and edge orientations shuffled.
+PlanarGraph graph_with_shuffled_ids(const std::vector<Point>& points, std::vector<std::pair<Index, Index>> edges,
+                                    std::mt19937& rng) {
+    std::vector<Index> new_id(points.size());
+    std::iota(new_id.begin(), new_id.end(), 0);
+    std::shuffle(new_id.begin(), new_id.end(), rng);
+    std::vector<Point> shuffled(points.size());
+    for (Index v = 0; v < points.size(); ++v) shuffled[new_id[v]] = points[v];
+    for (auto& [u, v] : edges) {
+        u = new_id[u];
+        v = new_id[v];
+        if (rng() % 2 != 0) std::swap(u, v);
+    }
+    std::shuffle(edges.begin(), edges.end(), rng);
+    return graph(shuffled, edges);
+}
+
 // More than 8192 half-edges, so that build() writes the DCEL through
 // several buckets of half-edge ids (write_half_edges), with shuffled ids so
 // that consecutive slots write to different buckets: a triangulated lattice
@@ -409,19 +426,7 @@ TEST(BuildOptions, LargeShuffledGraphSpansSeveralWriteBuckets) {
         if (x > 0) edges.emplace_back(comb + (x - 1) * 50, comb + x * 50);
     }
     for (Index k = 0; k < 5; ++k) points.push_back({-2.0 - k, 3.0 * k});
-    // Shuffle vertex ids, edge order and orientation.
-    std::vector<Index> new_id(points.size());
-    std::iota(new_id.begin(), new_id.end(), 0);
-    std::shuffle(new_id.begin(), new_id.end(), rng);
-    std::vector<Point> shuffled(points.size());
-    for (Index v = 0; v < points.size(); ++v) shuffled[new_id[v]] = points[v];
-    for (auto& [u, v] : edges) {
-        u = new_id[u];
-        v = new_id[v];
-        if (rng() % 2 != 0) std::swap(u, v);
-    }
-    std::shuffle(edges.begin(), edges.end(), rng);
-    const PlanarGraph g = graph(shuffled, edges);
+    const PlanarGraph g = graph_with_shuffled_ids(points, edges, rng);
     ASSERT_GT(2 * g.edges.size(), 2U * 8192U);
 
     const Dcel d = build(g);
@@ -494,18 +499,7 @@ TEST(BuildOptions, GraphInSweepOrderAndItsShuffleGiveTheSameFaces) {
     ASSERT_GT(2 * ordered.edges.size(), 2U * 8192U);
 
     std::mt19937 rng(11);
-    std::vector<Index> new_id(points.size());
-    std::iota(new_id.begin(), new_id.end(), 0);
-    std::shuffle(new_id.begin(), new_id.end(), rng);
-    std::vector<Point> shuffled_points(points.size());
-    for (Index v = 0; v < points.size(); ++v) shuffled_points[new_id[v]] = points[v];
-    for (auto& [u, v] : edges) {
-        u = new_id[u];
-        v = new_id[v];
-        if (rng() % 2 != 0) std::swap(u, v);
-    }
-    std::shuffle(edges.begin(), edges.end(), rng);
-    const PlanarGraph shuffled = graph(shuffled_points, edges);
+    const PlanarGraph shuffled = graph_with_shuffled_ids(points, edges, rng);
 
     const std::vector<GeometricFace> expected = geometric_faces(build(shuffled));
     ASSERT_EQ(expected.size(), kSquares + 1U);  // the unbounded face and one ring face per square
