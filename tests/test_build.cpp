@@ -377,9 +377,15 @@ TEST(BuildOptions, UncheckedModeBuildsTheSameFacesOnValidInput) {
     EXPECT_EQ(face_shapes(build(g, {.check_crossings = false})), face_shapes(build(g)));
 }
 
-// The graph with its vertex ids, edge order and edge orientations shuffled.
-PlanarGraph graph_with_shuffled_ids(const std::vector<Point>& points, std::vector<std::pair<Index, Index>> edges,
-                                    std::mt19937& rng) {
+// The graph with its vertex ids, edge order and edge orientations shuffled;
+// vertex v of the original is vertex new_id[v] of the shuffled graph.
+struct ShuffledGraph {
+    PlanarGraph graph;
+    std::vector<Index> new_id;
+};
+
+ShuffledGraph graph_with_shuffled_ids(const std::vector<Point>& points, std::vector<std::pair<Index, Index>> edges,
+                                      std::mt19937& rng) {
     std::vector<Index> new_id(points.size());
     std::iota(new_id.begin(), new_id.end(), 0);
     std::shuffle(new_id.begin(), new_id.end(), rng);
@@ -391,7 +397,7 @@ PlanarGraph graph_with_shuffled_ids(const std::vector<Point>& points, std::vecto
         if (rng() % 2 != 0) std::swap(u, v);
     }
     std::shuffle(edges.begin(), edges.end(), rng);
-    return graph(shuffled, edges);
+    return {graph(shuffled, edges), std::move(new_id)};
 }
 
 // More than 8192 half-edges, so that build() writes the DCEL through
@@ -426,7 +432,7 @@ TEST(BuildOptions, LargeShuffledGraphSpansSeveralWriteBuckets) {
         if (x > 0) edges.emplace_back(comb + (x - 1) * 50, comb + x * 50);
     }
     for (Index k = 0; k < 5; ++k) points.push_back({-2.0 - k, 3.0 * k});
-    const PlanarGraph g = graph_with_shuffled_ids(points, edges, rng);
+    const PlanarGraph g = graph_with_shuffled_ids(points, edges, rng).graph;
     ASSERT_GT(2 * g.edges.size(), 2U * 8192U);
 
     const Dcel d = build(g);
@@ -439,40 +445,18 @@ TEST(BuildOptions, LargeShuffledGraphSpansSeveralWriteBuckets) {
     EXPECT_EQ(d.num_vertices() + d.num_faces(), d.num_edges() + 1 + components_by_bfs(g));
 }
 
-// A face as points, independent of vertex, half-edge and face ids: its
-// outer cycle and holes as canonical point cycles (holes sorted), and its
-// isolated points sorted.
-using PointCycle = std::vector<std::pair<double, double>>;
-struct GeometricFace {
-    PointCycle outer;
-    std::vector<PointCycle> holes;
-    std::vector<std::pair<double, double>> isolated;
-    friend bool operator==(const GeometricFace&, const GeometricFace&) = default;
-    friend bool operator<(const GeometricFace& a, const GeometricFace& b) {
-        return std::tie(a.outer, a.holes, a.isolated) < std::tie(b.outer, b.holes, b.isolated);
+// Faces as face_shapes gives them, with every vertex id v replaced by
+// rename[v] (cycles re-canonicalized, lists re-sorted).
+std::vector<FaceShape> renamed(std::vector<FaceShape> shapes, const std::vector<Index>& rename) {
+    for (FaceShape& f : shapes) {
+        for (Index& v : f.outer) v = rename[v];
+        for (testing::Cycle& hole : f.holes) {
+            for (Index& v : hole) v = rename[v];
+        }
+        for (Index& v : f.isolated) v = rename[v];
+        f = testing::normalized(std::move(f));
     }
-};
-
-PointCycle point_cycle(const Dcel& d, HalfEdgeId start) {
-    PointCycle c;
-    for (const HalfEdgeId h : d.cycle(start)) c.emplace_back(d.point(d.origin(h)).x, d.point(d.origin(h)).y);
-    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());  // points on a cycle may repeat; fine here
-    return c;
-}
-
-std::vector<GeometricFace> geometric_faces(const Dcel& d) {
-    std::vector<GeometricFace> faces;
-    for (Index f = 0; f < d.num_faces(); ++f) {
-        GeometricFace face;
-        if (!d.is_unbounded(FaceId(f))) face.outer = point_cycle(d, d.outer(FaceId(f)));
-        for (const HalfEdgeId h : d.inner(FaceId(f))) face.holes.push_back(point_cycle(d, h));
-        for (const VertexId v : d.isolated(FaceId(f))) face.isolated.emplace_back(d.point(v).x, d.point(v).y);
-        std::sort(face.holes.begin(), face.holes.end());
-        std::sort(face.isolated.begin(), face.isolated.end());
-        faces.push_back(std::move(face));
-    }
-    std::sort(faces.begin(), faces.end());
-    return faces;
+    return sorted_shapes(std::move(shapes));
 }
 
 // Graphs whose half-edge ids follow the sweep (nested squares listed from
@@ -499,16 +483,18 @@ TEST(BuildOptions, GraphInSweepOrderAndItsShuffleGiveTheSameFaces) {
     ASSERT_GT(2 * ordered.edges.size(), 2U * 8192U);
 
     std::mt19937 rng(11);
-    const PlanarGraph shuffled = graph_with_shuffled_ids(points, edges, rng);
+    const ShuffledGraph shuffled = graph_with_shuffled_ids(points, edges, rng);
+    std::vector<Index> old_id(points.size());  // shuffled vertex id -> id in `ordered`
+    for (Index v = 0; v < points.size(); ++v) old_id[shuffled.new_id[v]] = v;
 
-    const std::vector<GeometricFace> expected = geometric_faces(build(shuffled));
+    const std::vector<FaceShape> expected = face_shapes(build(ordered));
     ASSERT_EQ(expected.size(), kSquares + 1U);  // the unbounded face and one ring face per square
     for (const bool check : {true, false}) {
-        for (const PlanarGraph* g : {&ordered, &shuffled}) {
+        for (const PlanarGraph* g : {&ordered, &shuffled.graph}) {
             const Dcel d = build(*g, {.check_crossings = check});
             const auto violation = validate(d);
             ASSERT_FALSE(violation.has_value()) << violation->message;
-            EXPECT_EQ(geometric_faces(d), expected);
+            EXPECT_EQ(g == &ordered ? face_shapes(d) : renamed(face_shapes(d), old_id), expected);
             EXPECT_EQ(d.num_vertices() + d.num_faces(), d.num_edges() + 1 + components_by_bfs(*g));
         }
     }

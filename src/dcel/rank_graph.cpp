@@ -126,8 +126,8 @@ RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
             }
             if (order.same_direction && rg.vertex[r] < bad_vertex) {
                 bad_vertex = rg.vertex[r];
-                bad_a = std::min(h0, h1);
-                bad_b = std::max(h0, h1);
+                bad_a = h0;  // throw_same_direction orders the pair itself
+                bad_b = h1;
             }
             continue;
         }
