@@ -1,6 +1,6 @@
 # Install rules and the CMake package (included last by the top-level
 # CMakeLists.txt, so every target below exists by then):
-#   include/dcel/**.hpp                 every header under src/dcel/, check/ included
+#   include/dcel/**.hpp                 the public headers (src/dcel/public-headers.txt)
 #   lib/libdcel*.a                      the libraries in dcel_install_targets
 #   bin/dcel                            the CLI (DCEL_BUILD_CLI)
 #   lib/cmake/dcel/dcelConfig.cmake     find_package(dcel CONFIG), with
@@ -42,10 +42,13 @@ install(TARGETS ${dcel_existing_targets}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-# Every header of the library, its generators and its checking helpers.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/dcel
-  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-  FILES_MATCHING PATTERN "*.hpp")
+# The public headers only (src/dcel/public-headers.txt, the list that
+# scripts/check-layers enforces); internal headers stay in the source tree.
+file(STRINGS ${PROJECT_SOURCE_DIR}/src/dcel/public-headers.txt dcel_public_headers REGEX "^dcel/")
+foreach(header IN LISTS dcel_public_headers)
+  get_filename_component(header_dir ${header} DIRECTORY)
+  install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${header_dir})
+endforeach()
 
 set(dcel_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/dcel)
 install(EXPORT dcelTargets NAMESPACE dcel:: DESTINATION ${dcel_cmake_dir})

@@ -2,7 +2,7 @@
 // face solvers, one right (exact angular order, clockwise neighbour) and one
 // with a planted bug (the counterclockwise neighbour). The helpers must pass
 // the first and fail the second, with a shrunk graph and a report.
-#include "dcel/check/testing.hpp"
+#include "dcel/testing/check_testing.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>

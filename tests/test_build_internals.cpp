@@ -11,11 +11,11 @@
 #include <random>
 #include <vector>
 
+#include "dcel/build/huge_pages.hpp"
+#include "dcel/build/lex_order.hpp"
+#include "dcel/build/ring_sort.hpp"
+#include "dcel/build/status_list.hpp"
 #include "dcel/error.hpp"
-#include "dcel/huge_pages.hpp"
-#include "dcel/lex_order.hpp"
-#include "dcel/ring_sort.hpp"
-#include "dcel/status_list.hpp"
 
 namespace dcel {
 namespace {

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "dcel/build.hpp"
-#include "dcel/cycle_scan.hpp"
 #include "dcel/edit.hpp"
 #include "dcel/queries.hpp"
+#include "dcel/query/cycle_scan.hpp"
 #include "dcel/validate.hpp"
 #include "support/check_helpers.hpp"
 

@@ -18,6 +18,7 @@
 #include "dcel/io/dcel_json.hpp"
 #include "dcel/io/graph_json.hpp"
 #include "dcel/io/json_reader.hpp"
+#include "dcel/io/json_writer.hpp"
 
 namespace dcel::io {
 namespace {

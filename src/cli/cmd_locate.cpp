@@ -4,7 +4,6 @@
 #include "commands.hpp"
 #include "dcel/build.hpp"
 #include "dcel/io/graph_json.hpp"
-#include "dcel/io/json_reader.hpp"
 #include "dcel/locate.hpp"
 #include "face_names.hpp"
 #include "json_out.hpp"
@@ -14,13 +13,7 @@ namespace {
 
 std::vector<Point> load_points(const std::string& path) {
     const std::string text = read_input(path);
-    return with_source(path, [&] {
-        io::JsonReader r(text);
-        std::vector<Point> points;
-        io::detail::read_points(r, points, kNoIndex);
-        r.end_document();
-        return points;
-    });
+    return with_source(path, [&] { return io::read_points(text); });
 }
 
 }  // namespace

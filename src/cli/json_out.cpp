@@ -1,6 +1,7 @@
 #include "json_out.hpp"
 
 #include "dcel/io/json_reader.hpp"
+#include "dcel/io/json_writer.hpp"
 
 namespace dcel::cli {
 

@@ -20,6 +20,7 @@
 #include <iterator>
 #include <vector>
 
+#include "dcel/contracts.hpp"
 #include "dcel/geometry/point.hpp"
 #include "dcel/ids.hpp"
 
@@ -87,28 +88,51 @@ public:
     [[nodiscard]] std::size_t num_faces() const { return faces_.size(); }
 
     // ---- Navigators
-    [[nodiscard]] VertexId origin(HalfEdgeId h) const { return origin_[h.index()]; }
-    [[nodiscard]] VertexId target(HalfEdgeId h) const { return origin_[twin(h).index()]; }
-    [[nodiscard]] HalfEdgeId next(HalfEdgeId h) const { return next_[h.index()]; }
-    [[nodiscard]] HalfEdgeId prev(HalfEdgeId h) const { return prev_[h.index()]; }
-    [[nodiscard]] FaceId face(HalfEdgeId h) const { return face_[h.index()]; }
+    // Every id argument must name an element of this DCEL (DCEL_EXPECTS,
+    // checked in debug, sanitizer and fuzz builds; see contracts.hpp).
+    [[nodiscard]] VertexId origin(HalfEdgeId h) const {
+        DCEL_EXPECTS(h.index() < origin_.size());
+        return origin_[h.index()];
+    }
+    [[nodiscard]] VertexId target(HalfEdgeId h) const {
+        DCEL_EXPECTS(h.index() < origin_.size());
+        return origin_[twin(h).index()];
+    }
+    [[nodiscard]] HalfEdgeId next(HalfEdgeId h) const {
+        DCEL_EXPECTS(h.index() < next_.size());
+        return next_[h.index()];
+    }
+    [[nodiscard]] HalfEdgeId prev(HalfEdgeId h) const {
+        DCEL_EXPECTS(h.index() < prev_.size());
+        return prev_[h.index()];
+    }
+    [[nodiscard]] FaceId face(HalfEdgeId h) const {
+        DCEL_EXPECTS(h.index() < face_.size());
+        return face_[h.index()];
+    }
     [[nodiscard]] static HalfEdgeId twin(HalfEdgeId h) { return dcel::twin(h); }
 
-    [[nodiscard]] Point point(VertexId v) const { return points_[v.index()]; }
+    [[nodiscard]] Point point(VertexId v) const {
+        DCEL_EXPECTS(v.index() < points_.size());
+        return points_[v.index()];
+    }
     // One outgoing half-edge (the smallest id after build); null when isolated.
-    [[nodiscard]] HalfEdgeId out(VertexId v) const { return out_[v.index()]; }
+    [[nodiscard]] HalfEdgeId out(VertexId v) const {
+        DCEL_EXPECTS(v.index() < out_.size());
+        return out_[v.index()];
+    }
 
-    [[nodiscard]] HalfEdgeId outer(FaceId f) const { return faces_[f.index()].outer; }
-    [[nodiscard]] const std::vector<HalfEdgeId>& inner(FaceId f) const { return faces_[f.index()].inner; }
-    [[nodiscard]] const std::vector<VertexId>& isolated(FaceId f) const { return faces_[f.index()].isolated; }
-    [[nodiscard]] bool is_unbounded(FaceId f) const { return faces_[f.index()].outer.is_null(); }
+    [[nodiscard]] HalfEdgeId outer(FaceId f) const { return record(f).outer; }
+    [[nodiscard]] const std::vector<HalfEdgeId>& inner(FaceId f) const { return record(f).inner; }
+    [[nodiscard]] const std::vector<VertexId>& isolated(FaceId f) const { return record(f).isolated; }
+    [[nodiscard]] bool is_unbounded(FaceId f) const { return record(f).outer.is_null(); }
 
     // ---- Walks (each is a range of half-edges)
     // The boundary cycle through h, forwards (next) or backwards (prev).
     [[nodiscard]] Orbit cycle(HalfEdgeId h) const { return {*this, h, OrbitStep::Next}; }
     [[nodiscard]] Orbit cycle_reversed(HalfEdgeId h) const { return {*this, h, OrbitStep::Prev}; }
     // The half-edges leaving the origin of h, clockwise (next(twin(h))) or
-    // counterclockwise (twin(prev(h))). Empty-safe: use only with a non-null h.
+    // counterclockwise (twin(prev(h))). A null h gives an empty walk.
     [[nodiscard]] Orbit around_origin_cw(HalfEdgeId h) const { return {*this, h, OrbitStep::ClockwiseAroundOrigin}; }
     [[nodiscard]] Orbit around_origin_ccw(HalfEdgeId h) const { return {*this, h, OrbitStep::CounterclockwiseAroundOrigin}; }
 
@@ -118,6 +142,11 @@ public:
     [[nodiscard]] const std::vector<HalfEdgeId>& next_links() const { return next_; }
 
 private:
+    [[nodiscard]] const FaceRecord& record(FaceId f) const {
+        DCEL_EXPECTS(f.index() < faces_.size());
+        return faces_[f.index()];
+    }
+
     friend class DcelBuilder;  // build.cpp fills the arrays
     friend class DcelEditor;   // edit.cpp changes them in place
 

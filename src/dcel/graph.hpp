@@ -21,4 +21,11 @@ struct PlanarGraph {
     std::vector<GraphEdge> edges;
 };
 
+// The ends of half-edge h of g, by that numbering (h must be < 2 * edges).
+[[nodiscard]] inline VertexId graph_origin(const PlanarGraph& g, HalfEdgeId h) {
+    const GraphEdge& e = g.edges[h.index() >> 1U];
+    return (h.index() & 1U) == 0 ? e.u : e.v;
+}
+[[nodiscard]] inline VertexId graph_target(const PlanarGraph& g, HalfEdgeId h) { return graph_origin(g, twin(h)); }
+
 }  // namespace dcel

@@ -1,48 +1,18 @@
 // Point location: is a point at a vertex, inside an edge, or inside a face?
 // Decided exactly (orient2d and coordinate comparisons only).
 //
-//  - locate_by_scan(): no preprocessing, O(V + E) per query. The simple
-//    reference answer, and what the edits use to place a new vertex.
-//  - PointLocator: a trapezoidal map with its search DAG (de Berg et al.,
-//    ch. 6), built by randomized incremental insertion in O(E log E) expected
-//    time and O(E) expected memory; each query then takes O(log E) expected
-//    time (plus O(log V) for the vertex check). Ties in x are broken by y
-//    (the symbolic shear x' = x + eps * y, i.e. lex order), so vertical edges
-//    and shared x-coordinates need no special cases. The shuffle uses its own
-//    seeded generator: the same seed gives the same structure everywhere.
-//    A PointLocator is a snapshot: it copies what it needs and does not see
-//    later edits of the DCEL; build a new one after editing.
+//  - locate_by_scan() (here, query/locate.cpp): no preprocessing, O(V + E)
+//    per query. The simple reference answer, and what the edits use to place
+//    a new vertex.
+//  - PointLocator (point_locator.hpp, included here): a trapezoidal map,
+//    O(log E) expected per query after O(E log E) expected preprocessing.
 #pragma once
 
-#include <cstdint>
-#include <ostream>
-#include <vector>
-
 #include "dcel/dcel.hpp"
+#include "dcel/location.hpp"
+#include "dcel/point_locator.hpp"
 
 namespace dcel {
-
-struct Location {
-    enum class Kind : unsigned char { Face, Edge, Vertex };
-    Kind kind = Kind::Face;
-    FaceId face;      // Kind::Face: the face whose interior holds the point
-    EdgeId edge;      // Kind::Edge: the edge whose interior holds the point
-    VertexId vertex;  // Kind::Vertex: the vertex at the point
-
-    [[nodiscard]] static Location in_face(FaceId f) { return {Kind::Face, f, {}, {}}; }
-    [[nodiscard]] static Location on_edge(EdgeId e) { return {Kind::Edge, {}, e, {}}; }
-    [[nodiscard]] static Location at_vertex(VertexId v) { return {Kind::Vertex, {}, {}, v}; }
-    friend bool operator==(const Location&, const Location&) = default;
-    // "in f2", "on e6", "at v1"
-    friend std::ostream& operator<<(std::ostream& os, const Location& l) {
-        switch (l.kind) {
-            case Kind::Face: return os << "in " << l.face;
-            case Kind::Edge: return os << "on " << l.edge;
-            case Kind::Vertex: return os << "at " << l.vertex;
-        }
-        return os;
-    }
-};
 
 // O(V + E): compares p with every vertex and edge, then finds the face whose
 // outer cycle winds around p and none of whose holes does.
@@ -51,60 +21,5 @@ struct Location {
 // The face containing the interior of the isolated vertex v (a vertex with no
 // edges), by scanning the faces' lists: O(F + isolated vertices).
 [[nodiscard]] FaceId face_of_isolated_vertex(const Dcel& d, VertexId v);
-
-class PointLocator {
-public:
-    static constexpr std::uint64_t kDefaultSeed = 0x5eed'dce1'0000'0001ULL;
-
-    explicit PointLocator(const Dcel& d, std::uint64_t seed = kDefaultSeed);
-
-    // O(log E) expected. Requires finite coordinates.
-    [[nodiscard]] Location locate(Point p) const;
-
-    // For measurements: nodes in the search DAG, and its depth (longest path).
-    [[nodiscard]] std::size_t num_nodes() const { return nodes_.size(); }
-    [[nodiscard]] std::size_t depth() const;
-
-private:
-    struct Segment {
-        VertexId left;   // lex-smaller end
-        VertexId right;  // lex-larger end
-        EdgeId edge;
-        FaceId above;  // the face on the left of left -> right
-        FaceId below;
-    };
-    struct Trapezoid {
-        Index top = kNoIndex;     // segment, or kNoIndex: unbounded above
-        Index bottom = kNoIndex;  // segment, or kNoIndex: unbounded below
-        VertexId leftp;           // the vertex on its left wall, or null: unbounded
-        VertexId rightp;
-        Index leaf = kNoIndex;  // its leaf node in the DAG
-    };
-    enum class NodeKind : unsigned char { X, Y, Leaf };
-    struct Node {
-        NodeKind kind = NodeKind::Leaf;
-        Index item = 0;           // X: vertex index; Y: segment; Leaf: trapezoid
-        Index first = kNoIndex;   // X: left child; Y: child above
-        Index second = kNoIndex;  // X: right child; Y: child below
-    };
-
-    [[nodiscard]] Point point(VertexId v) const { return points_[v.index()]; }
-    void insert(Index s);
-    // The trapezoid that segment s enters just after passing the vertex `after`.
-    [[nodiscard]] Index find_along(Index s, VertexId after) const;
-    // Is segment s above segment t just to the right of the point `after`,
-    // where both span it?
-    [[nodiscard]] bool above(const Segment& s, const Segment& t) const;
-    [[nodiscard]] Index new_trapezoid(Index top, Index bottom, VertexId leftp, VertexId rightp);
-    [[nodiscard]] Index leaf_of(Index trapezoid);
-    [[nodiscard]] FaceId face_of(const Trapezoid& t) const;
-
-    std::vector<Point> points_;          // by vertex id
-    std::vector<VertexId> by_position_;  // all vertices in lex order, for vertex hits
-    std::vector<Segment> segments_;
-    std::vector<Trapezoid> trapezoids_;      // some are dead (replaced); only leaves matter
-    std::vector<Node> nodes_;                // nodes_[0] is the root
-    std::vector<FaceId> face_of_trapezoid_;  // filled once the map is complete
-};
 
 }  // namespace dcel

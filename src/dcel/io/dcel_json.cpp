@@ -1,10 +1,11 @@
 #include "dcel/io/dcel_json.hpp"
+#include "dcel/io/json_writer.hpp"
 
 #include <array>
 #include <span>
 
-#include "dcel/cycle_scan.hpp"
 #include "dcel/io/graph_json.hpp"
+#include "dcel/query/cycle_scan.hpp"
 
 namespace dcel::io {
 

@@ -1,4 +1,5 @@
 #include "dcel/io/graph_json.hpp"
+#include "dcel/io/json_writer.hpp"
 
 #include <array>
 
@@ -104,6 +105,14 @@ PlanarGraph read_graph(std::string_view text, const CountLimits& limits) {
 }
 
 }  // namespace detail
+
+std::vector<Point> read_points(std::string_view text) {
+    JsonReader r(text);
+    std::vector<Point> points;
+    detail::read_points(r, points, kNoIndex);
+    r.end_document();
+    return points;
+}
 
 PlanarGraph read_graph(std::string_view text) { return detail::read_graph(text, CountLimits{}); }
 

@@ -31,6 +31,10 @@ namespace dcel::io {
 // cannot express.
 [[nodiscard]] std::string write_graph(const PlanarGraph& graph);
 
+// A document that is one array of points, [[x, y], ...] (as `dcel locate
+// --points` reads). Throws InvalidInput like read_graph.
+[[nodiscard]] std::vector<Point> read_points(std::string_view text);
+
 namespace detail {
 // read_graph with caps on the counts (TooLarge beyond them); the public
 // function uses CountLimits{}, which is what 32-bit ids can name.

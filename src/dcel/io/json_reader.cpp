@@ -1,10 +1,10 @@
 #include "dcel/io/json_reader.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <charconv>
 #include <cmath>
 #include <system_error>
+#include "dcel/contracts.hpp"
 
 #include "dcel/io/decimal.hpp"
 
@@ -563,7 +563,7 @@ void JsonReader::begin_object(std::string_view expected) {
 }
 
 bool JsonReader::next_member() {
-    assert(depth_ > 0 && frames_[depth_ - 1].object);
+    DCEL_ASSERT(depth_ > 0 && frames_[depth_ - 1].object);
     Frame& f = frames_[depth_ - 1];
     skip_whitespace();
     if (pos_ >= text_.size()) fail_unexpected(pos_, f.count == 0 ? "a key in double quotes or '}'" : "',' or '}'");
@@ -724,11 +724,5 @@ Index JsonReader::read_index_or_null(std::string_view noun) {
 }
 
 // ---------------------------------------------------------------- writing
-
-void fail_not_finite(const std::string& path, double v) {
-    const char* what = std::isnan(v) ? "NaN" : (v > 0 ? "Infinity" : "-Infinity");
-    throw InvalidInput(InputErrorKind::BadCoordinate,
-                       path + ": " + what + " cannot be written as JSON: coordinates must be finite numbers");
-}
 
 }  // namespace dcel::io

@@ -28,10 +28,4 @@ struct Rings {
 };
 [[nodiscard]] Rings sort_rings_checked(const PlanarGraph& g);
 
-[[nodiscard]] inline VertexId graph_origin(const PlanarGraph& g, HalfEdgeId h) {
-    const GraphEdge& e = g.edges[h.index() >> 1U];
-    return (h.index() & 1U) == 0 ? e.u : e.v;
-}
-[[nodiscard]] inline VertexId graph_target(const PlanarGraph& g, HalfEdgeId h) { return graph_origin(g, twin(h)); }
-
 }  // namespace dcel

@@ -1,4 +1,4 @@
-#include "dcel/cycle_scan.hpp"
+#include "dcel/query/cycle_scan.hpp"
 
 #include <algorithm>
 #include <cstdint>

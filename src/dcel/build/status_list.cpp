@@ -1,6 +1,6 @@
-#include "dcel/status_list.hpp"
+#include "dcel/build/status_list.hpp"
 
-#include "dcel/huge_pages.hpp"
+#include "dcel/build/huge_pages.hpp"
 
 namespace dcel {
 namespace {

@@ -1,4 +1,4 @@
-#include "dcel/rotation.hpp"
+#include "dcel/query/rotation.hpp"
 
 namespace dcel::detail {
 

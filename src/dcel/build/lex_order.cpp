@@ -1,13 +1,13 @@
-#include "dcel/lex_order.hpp"
+#include "dcel/build/lex_order.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 
+#include "dcel/build/huge_pages.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
-#include "dcel/huge_pages.hpp"
 
 namespace dcel {
 namespace {

@@ -4,12 +4,12 @@
 #include <numeric>
 #include <string>
 
+#include "dcel/build/input_checks.hpp"
+#include "dcel/build/sweep.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/area.hpp"
 #include "dcel/geometry/predicates.hpp"
-#include "dcel/input_checks.hpp"
-#include "dcel/sweep.hpp"
 
 namespace dcel {
 namespace {

@@ -5,12 +5,12 @@
 #include <cstdint>
 #include <utility>
 
+#include "dcel/build/huge_pages.hpp"
+#include "dcel/build/input_checks.hpp"
+#include "dcel/build/lex_order.hpp"
+#include "dcel/build/rank_graph.hpp"
+#include "dcel/build/sweep.hpp"
 #include "dcel/geometry/predicates.hpp"
-#include "dcel/huge_pages.hpp"
-#include "dcel/input_checks.hpp"
-#include "dcel/lex_order.hpp"
-#include "dcel/rank_graph.hpp"
-#include "dcel/sweep.hpp"
 
 namespace dcel {
 namespace {

@@ -17,9 +17,9 @@
 #include <span>
 #include <vector>
 
+#include "dcel/build/rank_graph.hpp"
 #include "dcel/graph.hpp"
 #include "dcel/ids.hpp"
-#include "dcel/rank_graph.hpp"
 
 namespace dcel {
 

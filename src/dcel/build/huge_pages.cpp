@@ -1,4 +1,4 @@
-#include "dcel/huge_pages.hpp"
+#include "dcel/build/huge_pages.hpp"
 
 #include <cstdint>
 

@@ -13,11 +13,11 @@
 // O(1) trapezoids in expectation, so this keeps the O(E log E) expected
 // construction and removes the most error-prone bookkeeping of the method.
 #include <algorithm>
-#include <cassert>
 #include <numeric>
+#include "dcel/contracts.hpp"
 
 #include "dcel/geometry/predicates.hpp"
-#include "dcel/locate.hpp"
+#include "dcel/point_locator.hpp"
 
 namespace dcel {
 namespace {
@@ -119,7 +119,7 @@ void PointLocator::insert(Index s) {
         crossed.push_back(find_along(s, wall));
         // The wall reaches the segment, so the next trapezoid starts at it:
         // the walk always moves right.
-        assert(trapezoids_[crossed.back()].leftp == wall);
+        DCEL_ASSERT(trapezoids_[crossed.back()].leftp == wall);
     }
     const std::size_t k = crossed.size() - 1;
     const Trapezoid first = trapezoids_[crossed[0]];

@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "dcel/core/finite.hpp"
 #include "dcel/dcel.hpp"
 
 namespace dcel::detail {
@@ -17,7 +18,6 @@ namespace dcel::detail {
 
 void require_vertex(const Dcel& d, VertexId v, std::string_view edit);
 void require_edge(const Dcel& d, EdgeId e, std::string_view edit);
-void require_finite(Point p, std::string_view edit);
 
 // p is neither at a vertex nor inside an edge. O(V + E).
 void require_point_free(const Dcel& d, Point p, std::string_view edit);

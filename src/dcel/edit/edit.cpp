@@ -9,16 +9,16 @@
 #include "dcel/edit.hpp"
 
 #include <algorithm>
-#include <cassert>
+#include "dcel/contracts.hpp"
 
-#include "dcel/edit_checks.hpp"
+#include "dcel/edit/edit_checks.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/area.hpp"
 #include "dcel/geometry/segments.hpp"
 #include "dcel/geometry/winding.hpp"
 #include "dcel/locate.hpp"
-#include "dcel/rotation.hpp"
+#include "dcel/query/rotation.hpp"
 
 namespace dcel {
 
@@ -42,7 +42,10 @@ private:
     [[nodiscard]] VertexId origin(HalfEdgeId h) const { return d_.origin(h); }
     [[nodiscard]] VertexId target(HalfEdgeId h) const { return d_.target(h); }
     [[nodiscard]] Point point(VertexId v) const { return d_.point(v); }
-    [[nodiscard]] FaceRecord& record(FaceId f) { return d_.faces_[f.index()]; }
+    [[nodiscard]] FaceRecord& record(FaceId f) {
+        DCEL_EXPECTS(f.index() < d_.faces_.size());
+        return d_.faces_[f.index()];
+    }
     [[nodiscard]] std::size_t degree(VertexId v) const {
         std::size_t n = 0;
         if (!d_.out(v).is_null()) {
@@ -53,10 +56,14 @@ private:
     [[nodiscard]] static std::string edges_text(std::size_t n) { return std::to_string(n) + (n == 1 ? " edge" : " edges"); }
     // next(a) = b and prev(b) = a, always together (pmp's set_next_halfedge).
     void link(HalfEdgeId a, HalfEdgeId b) {
+        DCEL_EXPECTS(a.index() < d_.next_.size() && b.index() < d_.prev_.size());
         d_.next_[a.index()] = b;
         d_.prev_[b.index()] = a;
     }
-    void set_out(VertexId v, HalfEdgeId h) { d_.out_[v.index()] = h; }
+    void set_out(VertexId v, HalfEdgeId h) {
+        DCEL_EXPECTS(v.index() < d_.out_.size() && (h.is_null() || d_.origin(h) == v));
+        d_.out_[v.index()] = h;
+    }
 
     // ---- Growing: each appends at the end of its arrays
     VertexId append_vertex(Point p);                           // no edges, listed in no face yet
@@ -79,6 +86,13 @@ private:
     FaceId split_face(FaceId f, HalfEdgeId x);
     void join_cycles(FaceId f, HalfEdgeId x);
     void move_enclosed(FaceId from, FaceId to, HalfEdgeId boundary, HalfEdgeId skip);
+
+    // ---- remove_edge's four cases
+    struct Removal;
+    IdChange<FaceId> merge_faces_across(const Removal& r);
+    void remove_lone_edge(const Removal& r);
+    void remove_dangling_edge(const Removal& r, bool u_end);
+    void remove_bridge(const Removal& r);
 
     // ---- Shrinking: swap with last; each returns the id that moved, or null
     EdgeId remove_edge_slot(EdgeId e);
@@ -152,7 +166,7 @@ bool DcelEditor::encloses(HalfEdgeId start, Point p) const {
 void DcelEditor::erase_isolated(FaceId f, VertexId v) {
     auto& iso = record(f).isolated;
     const auto it = std::find(iso.begin(), iso.end(), v);
-    assert(it != iso.end() && "an isolated end of a clear segment lies in the segment's face");
+    DCEL_ASSERT(it != iso.end() && "an isolated end of a clear segment lies in the segment's face");
     if (it != iso.end()) iso.erase(it);
 }
 
@@ -358,121 +372,147 @@ void DcelEditor::join_cycles(FaceId f, HalfEdgeId x) {
 
 // ------------------------------------------------------------------ removing
 
+// The four cases of remove_edge, told apart by the faces on e's two sides
+// and the degrees of its ends. Each relinks the cycles and fixes the face
+// records; remove_edge then frees the edge's slot.
+struct DcelEditor::Removal {
+    HalfEdgeId h, t;  // u -> v and v -> u
+    VertexId u, v;
+    HalfEdgeId h_next, h_prev, t_next, t_prev;
+};
+
 Change DcelEditor::remove_edge(EdgeId e) {
     detail::require_edge(d_, e, "remove_edge");
-    const HalfEdgeId h = half_edge_of(e, 0);  // u -> v
-    const HalfEdgeId t = twin(h);             // v -> u
-    const VertexId u = origin(h);
-    const VertexId v = origin(t);
-    const FaceId fh = d_.face(h);
-    const FaceId ft = d_.face(t);
-    const HalfEdgeId h_next = next(h);
-    const HalfEdgeId h_prev = prev(h);
-    const HalfEdgeId t_next = next(t);
-    const HalfEdgeId t_prev = prev(t);
-    const bool u_end = t_next == h;  // u has no other edge
-    const bool v_end = h_next == t;
+    Removal r;
+    r.h = half_edge_of(e, 0);
+    r.t = twin(r.h);
+    r.u = origin(r.h);
+    r.v = origin(r.t);
+    r.h_next = next(r.h);
+    r.h_prev = prev(r.h);
+    r.t_next = next(r.t);
+    r.t_prev = prev(r.t);
+    const bool u_end = r.t_next == r.h;  // u has no other edge
+    const bool v_end = r.h_next == r.t;
     Change c;
-
-    if (fh != ft) {
-        // Two faces meet along e; neither end can be of degree 1. Their two
-        // cycles become one; the faces merge into the smaller id.
-        const FaceId keep = std::min(fh, ft);
-        const FaceId gone = std::max(fh, ft);
-        const bool h_outer = !record(fh).outer.is_null() && on_cycle(h, record(fh).outer);
-        const bool t_outer = !record(ft).outer.is_null() && on_cycle(t, record(ft).outer);
-        auto drop_entry = [&](FaceId f, HalfEdgeId on) {
-            const std::vector<HalfEdgeId> cyc = sorted_cycle(on);
-            std::erase_if(record(f).inner, [&](HalfEdgeId x) { return std::binary_search(cyc.begin(), cyc.end(), x); });
-        };
-        if (!h_outer) drop_entry(fh, h);
-        if (!t_outer) drop_entry(ft, t);
-        link(h_prev, t_next);
-        link(t_prev, h_next);
-        const HalfEdgeId merged = h_next;
-        FaceRecord absorbed = std::move(record(gone));
-        record(gone) = FaceRecord{};
-        FaceRecord& kept = record(keep);
-        // When both cycles were outer boundaries, two bounded faces meet and
-        // the merged cycle is the outer boundary. Otherwise one of them was a
-        // hole of the face outside, and the face it enclosed opens into it:
-        // the outside face's outer boundary stays, the merged cycle is a hole.
-        HalfEdgeId outer_from_gone;
-        if (h_outer && t_outer) {
-            kept.outer = merged;
-        } else {
-            const FaceId outside = h_outer ? ft : fh;
-            if (outside == gone) {
-                kept.outer = absorbed.outer;
-                outer_from_gone = absorbed.outer;
-            }
-            kept.inner.push_back(merged);
-        }
-        kept.inner.insert(kept.inner.end(), absorbed.inner.begin(), absorbed.inner.end());
-        kept.isolated.insert(kept.isolated.end(), absorbed.isolated.begin(), absorbed.isolated.end());
-        relabel_cycle(merged, keep);
-        if (!outer_from_gone.is_null()) relabel_cycle(outer_from_gone, keep);
-        for (const HalfEdgeId x : absorbed.inner) relabel_cycle(x, keep);
-        if (d_.out(u) == h) set_out(u, t_next);
-        if (d_.out(v) == t) set_out(v, h_next);
-        c.faces.removed = gone;
-        c.faces.merged_into = keep;
-        c.faces.moved = remove_face_slot(gone);
+    if (d_.face(r.h) != d_.face(r.t)) {
+        c.faces = merge_faces_across(r);
+    } else if (u_end && v_end) {
+        remove_lone_edge(r);
+    } else if (u_end || v_end) {
+        remove_dangling_edge(r, u_end);
     } else {
-        const FaceId f = fh;
-        const HalfEdgeId outer = record(f).outer;
-        const bool is_outer = !outer.is_null() && on_cycle(h, outer);
-        if (u_end && v_end) {
-            // A lone edge: its 2-cycle was a hole of f; both ends become isolated.
-            std::erase_if(record(f).inner, [&](HalfEdgeId x) { return x == h || x == t; });
-            record(f).isolated.insert(record(f).isolated.end(), {u, v});
-            set_out(u, {});
-            set_out(v, {});
-        } else if (u_end || v_end) {
-            // A dangling edge: the cycle shortens, the free end becomes isolated.
-            const VertexId end = u_end ? u : v;
-            const HalfEdgeId survivor = u_end ? h_next : t_next;
-            if (u_end) {
-                link(t_prev, h_next);
-            } else {
-                link(h_prev, t_next);
-            }
-            replace_in_record(f, h, survivor);
-            replace_in_record(f, t, survivor);
-            record(f).isolated.push_back(end);
-            set_out(end, {});
-            const VertexId other = u_end ? v : u;
-            if (d_.out(other) == h || d_.out(other) == t) set_out(other, survivor);
-        } else {
-            // A bridge: the cycle splits into A (through h_next, around v's
-            // side) and B (through t_next). A component breaks off and becomes
-            // a hole of f.
-            std::vector<HalfEdgeId> old_cycle;
-            if (!is_outer) old_cycle = sorted_cycle(h);
-            link(t_prev, h_next);
-            link(h_prev, t_next);
-            if (is_outer) {
-                // One part still bounds f from outside (positive area); the
-                // other is the component that broke off inside f.
-                const bool a_outside = area_sign(h_next) == Sign::Positive;
-                record(f).outer = a_outside ? h_next : t_next;
-                record(f).inner.push_back(a_outside ? t_next : h_next);
-            } else {
-                for (HalfEdgeId& x : record(f).inner) {
-                    if (std::binary_search(old_cycle.begin(), old_cycle.end(), x)) {
-                        x = h_next;
-                        break;
-                    }
-                }
-                record(f).inner.push_back(t_next);
-            }
-            if (d_.out(u) == h) set_out(u, t_next);
-            if (d_.out(v) == t) set_out(v, h_next);
-        }
+        remove_bridge(r);
     }
     c.edges.removed = e;
     c.edges.moved = remove_edge_slot(e);
     return c;
+}
+
+// Two faces meet along the edge; neither end can be of degree 1. Their two
+// cycles become one; the faces merge into the smaller id.
+IdChange<FaceId> DcelEditor::merge_faces_across(const Removal& r) {
+    const FaceId fh = d_.face(r.h);
+    const FaceId ft = d_.face(r.t);
+    const FaceId keep = std::min(fh, ft);
+    const FaceId gone = std::max(fh, ft);
+    const bool h_outer = !record(fh).outer.is_null() && on_cycle(r.h, record(fh).outer);
+    const bool t_outer = !record(ft).outer.is_null() && on_cycle(r.t, record(ft).outer);
+    auto drop_entry = [&](FaceId f, HalfEdgeId on) {
+        const std::vector<HalfEdgeId> cyc = sorted_cycle(on);
+        std::erase_if(record(f).inner, [&](HalfEdgeId x) { return std::binary_search(cyc.begin(), cyc.end(), x); });
+    };
+    if (!h_outer) drop_entry(fh, r.h);
+    if (!t_outer) drop_entry(ft, r.t);
+    link(r.h_prev, r.t_next);
+    link(r.t_prev, r.h_next);
+    const HalfEdgeId merged = r.h_next;
+    FaceRecord absorbed = std::move(record(gone));
+    record(gone) = FaceRecord{};
+    FaceRecord& kept = record(keep);
+    // When both cycles were outer boundaries, two bounded faces meet and
+    // the merged cycle is the outer boundary. Otherwise one of them was a
+    // hole of the face outside, and the face it enclosed opens into it:
+    // the outside face's outer boundary stays, the merged cycle is a hole.
+    HalfEdgeId outer_from_gone;
+    if (h_outer && t_outer) {
+        kept.outer = merged;
+    } else {
+        const FaceId outside = h_outer ? ft : fh;
+        if (outside == gone) {
+            kept.outer = absorbed.outer;
+            outer_from_gone = absorbed.outer;
+        }
+        kept.inner.push_back(merged);
+    }
+    kept.inner.insert(kept.inner.end(), absorbed.inner.begin(), absorbed.inner.end());
+    kept.isolated.insert(kept.isolated.end(), absorbed.isolated.begin(), absorbed.isolated.end());
+    relabel_cycle(merged, keep);
+    if (!outer_from_gone.is_null()) relabel_cycle(outer_from_gone, keep);
+    for (const HalfEdgeId x : absorbed.inner) relabel_cycle(x, keep);
+    if (d_.out(r.u) == r.h) set_out(r.u, r.t_next);
+    if (d_.out(r.v) == r.t) set_out(r.v, r.h_next);
+    IdChange<FaceId> faces;
+    faces.removed = gone;
+    faces.merged_into = keep;
+    faces.moved = remove_face_slot(gone);
+    return faces;
+}
+
+// A lone edge: its 2-cycle was a hole of its face; both ends become isolated.
+void DcelEditor::remove_lone_edge(const Removal& r) {
+    FaceRecord& rec = record(d_.face(r.h));
+    std::erase_if(rec.inner, [&](HalfEdgeId x) { return x == r.h || x == r.t; });
+    rec.isolated.insert(rec.isolated.end(), {r.u, r.v});
+    set_out(r.u, {});
+    set_out(r.v, {});
+}
+
+// A dangling edge: the cycle shortens, the free end becomes isolated.
+void DcelEditor::remove_dangling_edge(const Removal& r, bool u_end) {
+    const FaceId f = d_.face(r.h);
+    const VertexId end = u_end ? r.u : r.v;
+    const HalfEdgeId survivor = u_end ? r.h_next : r.t_next;
+    if (u_end) {
+        link(r.t_prev, r.h_next);
+    } else {
+        link(r.h_prev, r.t_next);
+    }
+    replace_in_record(f, r.h, survivor);
+    replace_in_record(f, r.t, survivor);
+    record(f).isolated.push_back(end);
+    set_out(end, {});
+    const VertexId other = u_end ? r.v : r.u;
+    if (d_.out(other) == r.h || d_.out(other) == r.t) set_out(other, survivor);
+}
+
+// A bridge: the cycle splits into A (through h_next, around v's side) and B
+// (through t_next). A component breaks off and becomes a hole of the face.
+void DcelEditor::remove_bridge(const Removal& r) {
+    const FaceId f = d_.face(r.h);
+    const HalfEdgeId outer = record(f).outer;
+    const bool is_outer = !outer.is_null() && on_cycle(r.h, outer);
+    std::vector<HalfEdgeId> old_cycle;
+    if (!is_outer) old_cycle = sorted_cycle(r.h);
+    link(r.t_prev, r.h_next);
+    link(r.h_prev, r.t_next);
+    if (is_outer) {
+        // One part still bounds f from outside (positive area); the other is
+        // the component that broke off inside f.
+        const bool a_outside = area_sign(r.h_next) == Sign::Positive;
+        record(f).outer = a_outside ? r.h_next : r.t_next;
+        record(f).inner.push_back(a_outside ? r.t_next : r.h_next);
+    } else {
+        for (HalfEdgeId& x : record(f).inner) {
+            if (std::binary_search(old_cycle.begin(), old_cycle.end(), x)) {
+                x = r.h_next;
+                break;
+            }
+        }
+        record(f).inner.push_back(r.t_next);
+    }
+    if (d_.out(r.u) == r.h) set_out(r.u, r.t_next);
+    if (d_.out(r.v) == r.t) set_out(r.v, r.h_next);
 }
 
 Change DcelEditor::remove_isolated_vertex(VertexId v) {

@@ -10,10 +10,10 @@
 #include <span>
 #include <vector>
 
+#include "dcel/build/lex_order.hpp"
 #include "dcel/geometry/point.hpp"
 #include "dcel/graph.hpp"
 #include "dcel/ids.hpp"
-#include "dcel/lex_order.hpp"
 
 namespace dcel {
 

@@ -1,6 +1,4 @@
-#include "dcel/edit_checks.hpp"
-
-#include <cmath>
+#include "dcel/edit/edit_checks.hpp"
 
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
@@ -42,14 +40,6 @@ void require_edge(const Dcel& d, EdgeId e, std::string_view edit) {
         s.append(": there is no edge ").append(e.str()).append(" (the DCEL has ");
         s.append(std::to_string(d.num_edges())).append(" edges)");
         throw InvalidInput(InputErrorKind::BadIndex, s, {}, {e});
-    }
-}
-
-void require_finite(Point p, std::string_view edit) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-        std::string s(edit);
-        s.append(": the point ").append(format_point(p)).append(" has a coordinate that is not finite");
-        throw InvalidInput(InputErrorKind::BadCoordinate, s);
     }
 }
 

@@ -1,14 +1,14 @@
-#include "dcel/input_checks.hpp"
+#include "dcel/build/input_checks.hpp"
 
 #include <cmath>
 #include <numeric>
 #include <string>
 
+#include "dcel/build/lex_order.hpp"
+#include "dcel/build/rank_graph.hpp"
+#include "dcel/build/ring_sort.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
-#include "dcel/lex_order.hpp"
-#include "dcel/rank_graph.hpp"
-#include "dcel/ring_sort.hpp"
 
 namespace dcel {
 

@@ -1,16 +1,15 @@
-#include "dcel/rank_graph.hpp"
+#include "dcel/build/rank_graph.hpp"
 
 #include <algorithm>
 #include <cstdint>
 #include <string>
 #include <utility>
 
+#include "dcel/build/huge_pages.hpp"
+#include "dcel/build/ring_sort.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/predicates.hpp"
-#include "dcel/huge_pages.hpp"
-#include "dcel/input_checks.hpp"
-#include "dcel/ring_sort.hpp"
 
 namespace dcel {
 

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <limits>
 
-#include "dcel/cycle_scan.hpp"
 #include "dcel/geometry/area.hpp"
 #include "dcel/geometry/exact_sum.hpp"
+#include "dcel/query/cycle_scan.hpp"
 
 namespace dcel {
 namespace {

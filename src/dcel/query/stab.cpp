@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <optional>
 
-#include "dcel/edit_checks.hpp"
+#include "dcel/core/finite.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/line_order.hpp"
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/geometry/segments.hpp"
 #include "dcel/locate.hpp"
-#include "dcel/rotation.hpp"
+#include "dcel/query/rotation.hpp"
 
 namespace dcel {
 namespace {

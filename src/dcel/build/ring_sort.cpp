@@ -1,4 +1,4 @@
-#include "dcel/ring_sort.hpp"
+#include "dcel/build/ring_sort.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,15 +1,15 @@
-#include "dcel/sweep.hpp"
+#include "dcel/build/sweep.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <utility>
+#include "dcel/contracts.hpp"
 
+#include "dcel/build/huge_pages.hpp"
+#include "dcel/build/status_list.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/geometry/segments.hpp"
-#include "dcel/huge_pages.hpp"
-#include "dcel/status_list.hpp"
 
 namespace dcel {
 namespace {
@@ -105,7 +105,7 @@ private:
             if (e == kNoIndex || !status_.contains(e)) continue;
             // Each edge leaves once, at its right end, so the node recorded for
             // it is still its own, though ids are reused.
-            assert(spans_[e].right == r && spans_[e].left == rg_.target[s]);
+            DCEL_ASSERT(spans_[e].right == r && spans_[e].left == rg_.target[s]);
             if (!any_ending) {
                 Index lo = e;
                 Index hi = e;
@@ -279,7 +279,7 @@ private:
 
 void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted, std::span<Index> below,
                  bool check_intersections, std::span<const char> in_status) {
-    assert(in_status.empty() || !check_intersections);
+    DCEL_ASSERT(in_status.empty() || !check_intersections);
     Sweep(rg, graph, check_intersections, in_status).run(wanted, below);
 }
 
