@@ -57,9 +57,8 @@ bool noted(const Report& r, std::string_view text) {
 //   0 +-----------+ 1                   f2 = shell 4 5 6
 //                          as rings:    f1 = 0 1 2 3 (the triangle filled in)
 //                     7 .               f2 = 4 5 6
-constexpr std::string_view kBridged =
-    R"({"vertices": [[0,0],[4,0],[4,4],[0,4],[1,1],[2,1],[1,2],[5,5]],)"
-    R"( "edges": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6],[6,4],[0,4]]})";
+constexpr std::string_view kBridged = R"({"vertices": [[0,0],[4,0],[4,4],[0,4],[1,1],[2,1],[1,2],[5,5]],)"
+                                      R"( "edges": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6],[6,4],[0,4]]})";
 
 TEST(CheckPolygons, AgreeInEverySpelling) {
     const Dcel d = reference(kBridged);
@@ -160,9 +159,8 @@ TEST(CheckPolygons, Conventions) {
 // corner 4 on the square's corner 0 (no bridge). f1's outer cycle walks the
 // square and the triangle, pinched at 0; a polygonizer gives the square with
 // a hole touching it, or one self-touching shell. Both are f1.
-constexpr std::string_view kPinched =
-    R"({"vertices": [[0,0],[4,0],[4,4],[0,4],[9,9],[2,1],[1,2]],)"
-    R"( "edges": [[0,1],[1,2],[2,3],[3,0],[0,5],[5,6],[6,0]]})";
+constexpr std::string_view kPinched = R"({"vertices": [[0,0],[4,0],[4,4],[0,4],[9,9],[2,1],[1,2]],)"
+                                      R"( "edges": [[0,1],[1,2],[2,3],[3,0],[0,5],[5,6],[6,0]]})";
 
 TEST(CheckPolygons, PinchedBoundariesMeanTheirPointSets) {
     const Dcel d = reference(kPinched);
@@ -226,8 +224,7 @@ TEST(CheckFaces, Conventions) {
     EXPECT_TRUE(check_text(d, R"({"faces": [[1,2,3], [2,1,3]]})", AnswerKind::Faces, {.one_based = true}).agrees());
     // With a dangling edge 0-3 into the triangle the two cycles are no longer
     // each other's reversal: [0, 1, 2, 0, 3] and [1, 0, 2], walked backwards.
-    const Dcel dangle =
-        reference(R"({"vertices": [[0,0],[4,0],[0,4],[1,1]], "edges": [[0,1],[1,2],[2,0],[0,3]]})");
+    const Dcel dangle = reference(R"({"vertices": [[0,0],[4,0],[0,4],[1,1]], "edges": [[0,1],[1,2],[2,0],[0,3]]})");
     const char* backwards = R"({"faces": [[0,3,0,2,1], [1,2,0]]})";
     r = check_text(dangle, backwards);
     EXPECT_TRUE(has(r, DifferenceKind::ReversedCycle));
@@ -304,8 +301,7 @@ TEST(ReadAnswer, RefusesWhatFitsNoKindWithThePath) {
     EXPECT_NE(message(R"({"answer": 1})").find("needs a \"faces\""), std::string::npos);
     EXPECT_NE(message(R"({"type": "LineString", "coordinates": [[0, 0], [1, 1]]})").find("LineString is not a polygon"),
               std::string::npos);
-    EXPECT_NE(message(R"({"polygons": [[[0, [1, 2]]]]})").find("both as vertex ids and as coordinates"),
-              std::string::npos);
+    EXPECT_NE(message(R"({"polygons": [[[0, [1, 2]]]]})").find("both as vertex ids and as coordinates"), std::string::npos);
     EXPECT_NE(message(R"({"polygons": [[[[0, 0, 0, 0]]]]})").find("polygons[0][0][0]"), std::string::npos);
     EXPECT_NE(message(R"({"polygons": [{"holes": []}]})").find("missing key \"shell\""), std::string::npos);
     EXPECT_NE(message(R"([[[[[0]]]]])").find("fit no answer kind"), std::string::npos);

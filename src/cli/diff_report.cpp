@@ -168,19 +168,28 @@ std::string schedule_arguments(const DiffOptions& options) {
             a += (i == 0 ? "" : ",") + std::string(gen::coordinate_class_name(s.classes[i]));
         }
     }
-    if (options.stream) a += " --stream";
     return a;
 }
 
+namespace {
+
+// --stream and how answers are read: what a replay needs besides the schedule.
+std::string run_arguments(const DiffOptions& options) {
+    std::string a;
+    if (options.stream) a += " --stream";
+    if (options.answer.kind) a += " --answer " + std::string(check::answer_kind_name(*options.answer.kind));
+    if (options.answer.conventions.face_on_right) a += " --face-on right";
+    if (options.answer.conventions.one_based) a += " --one-based";
+    if (options.answer.conventions.unoriented) a += " --unoriented";
+    return a;
+}
+
+}  // namespace
+
 std::string replay_command(const DiffOptions& options, std::size_t case_number) {
-    std::string cmd = "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) + " --case " +
-                      std::to_string(case_number);
-    if (options.answer.kind) cmd += " --answer " + std::string(check::answer_kind_name(*options.answer.kind));
-    if (options.answer.conventions.face_on_right) cmd += " --face-on right";
-    if (options.answer.conventions.one_based) cmd += " --one-based";
-    if (options.answer.conventions.unoriented) cmd += " --unoriented";
-    cmd += " --timeout-ms " + std::to_string(options.limits.timeout.count());
-    return cmd;
+    return "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) + " --case " +
+           std::to_string(case_number) + run_arguments(options) + " --timeout-ms " +
+           std::to_string(options.limits.timeout.count());
 }
 
 std::string format_report(const DiffOptions& options, const DiffResult& result) {
@@ -239,7 +248,8 @@ std::string report_json(const DiffOptions& options, const DiffResult& result) {
     key("format", true);
     w.string("dcel diff report 1");
     key("command");
-    std::string command = "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options);
+    std::string command = "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) +
+                          run_arguments(options) + " --timeout-ms " + std::to_string(options.limits.timeout.count());
     if (options.cases) command += " --cases " + std::to_string(*options.cases);
     if (options.time) command += " --time " + seconds(*options.time).substr(0, seconds(*options.time).size() - 2);
     if (options.keep_going) command += " --keep-going";
@@ -267,6 +277,8 @@ std::string report_json(const DiffOptions& options, const DiffResult& result) {
     w.string(kStops[static_cast<std::size_t>(result.stopped_by)]);
     key("elapsed_ms");
     w.count(static_cast<std::uint64_t>(result.elapsed.count()));
+    key("reference_cpu_ms");
+    w.count(static_cast<std::uint64_t>(result.reference_cpu.count()));
     key("agrees");
     w.raw(result.failures.empty() ? "true" : "false");
     key("failures");

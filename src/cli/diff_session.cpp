@@ -1,6 +1,7 @@
 #include "diff_session.hpp"
 
 #include <algorithm>
+#include <ctime>
 #include <deque>
 #include <memory>
 #include <unordered_set>
@@ -112,6 +113,8 @@ public:
         }
         result_.restarts = impl_.starts() > 0 ? impl_.starts() - 1 : 0;
         result_.elapsed = since(start_);
+        result_.reference_cpu = milliseconds(
+            static_cast<std::int64_t>(static_cast<double>(std::clock() - cpu_start_) * 1000.0 / CLOCKS_PER_SEC));
         result_.agreed_as = judging_.agreed_as;
         return std::move(result_);
     }
@@ -214,8 +217,8 @@ private:
         if (x.first.kind != FailureKind::WrongAnswer) return;
         try {
             const check::Answer a = check::read_answer(x.first.run.out, x.first.answer_kind);
-            if (std::optional<std::string> hint =
-                    check::convention_hint(build(x.original.graph), a, o_.answer.conventions)) {
+            if (std::optional<std::string> hint = check::convention_hint(build(x.original.graph), a,
+                                                                         o_.answer.conventions)) {
                 notes.push_back(std::move(*hint));
             }
         } catch (const InvalidInput&) {
@@ -367,6 +370,7 @@ private:
     const DiffOptions& o_;
     const Progress& progress_;
     Clock::time_point start_ = Clock::now();
+    std::clock_t cpu_start_ = std::clock();  // this process only, not the command
     Impl impl_;
     AnswerJudging judging_;
     DiffResult result_;

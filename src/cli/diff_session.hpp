@@ -82,6 +82,9 @@ struct DiffResult {
     std::vector<Failure> failures;
     std::array<std::size_t, 4> agreed_as{};  // answers that agreed, by the kind they were read as
     std::size_t large_cases = 0;             // large cases run
+    // CPU time of dcel itself (generating, writing, building the reference,
+    // judging), without the command's: what the reference side costs.
+    std::chrono::milliseconds reference_cpu{};
 };
 
 // Called with a short status line while working.

@@ -31,7 +31,7 @@ def main():
         if len(cases) != len(report["failures"]) + 1 or len(failures) != len(report["failures"]):
             sys.exit("junit: %d test cases and %d failures for %d failures in the report"
                      % (len(cases), len(failures), len(report["failures"])))
-        line += "; junit: %d test cases, %d failures" % (len(cases), len(failures))
+        line += ", junit: %d test cases, %d failures" % (len(cases), len(failures))
     print(line)
 
 

@@ -114,7 +114,6 @@ struct Answer {
 
 [[nodiscard]] Report compare_polygons(const Dcel& reference, const RegionAnswer& answer,
                                       const Conventions& conventions = {});
-[[nodiscard]] Report compare_rings(const Dcel& reference, const RegionAnswer& answer,
-                                   const Conventions& conventions = {});
+[[nodiscard]] Report compare_rings(const Dcel& reference, const RegionAnswer& answer, const Conventions& conventions = {});
 
 }  // namespace dcel::check

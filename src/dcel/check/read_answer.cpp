@@ -135,8 +135,7 @@ public:
     void geojson(JsonReader& r, const std::vector<std::string>& types, std::size_t& next_type) {
         if (next_type >= types.size()) r.fail_type("a GeoJSON object");
         const std::string type = types[next_type++];
-        static constexpr std::array<std::string_view, 5> kKeys{"type", "coordinates", "geometry", "features",
-                                                                "geometries"};
+        static constexpr std::array<std::string_view, 5> kKeys{"type", "coordinates", "geometry", "features", "geometries"};
         r.begin_object("a GeoJSON object");
         std::uint64_t seen = 0;
         for (int k = 0; (k = r.next_known_member(kKeys, seen)) >= 0;) {
@@ -348,16 +347,15 @@ Detected detect(std::string_view text) {
                            "key, or a GeoJSON \"type\"");
     }
     if (top != JsonType::Array) r.fail_type("an answer: an object or an array");
-    std::size_t depth = 0;          // arrays entered before the first number
-    std::size_t last_length = 0;    // elements of the innermost array that holds it
+    std::size_t depth = 0;        // arrays entered before the first number
+    std::size_t last_length = 0;  // elements of the innermost array that holds it
     for (;;) {
         if (r.peek() != JsonType::Array) break;
         r.begin_array("an array");
         ++depth;
         if (!r.next_element()) {  // empty: nothing deeper to see
             if (depth == 1) {
-                return {AnswerKind::Faces, "an empty list",
-                        {AnswerKind::Faces, AnswerKind::Polygons, AnswerKind::Rings}};
+                return {AnswerKind::Faces, "an empty list", {AnswerKind::Faces, AnswerKind::Polygons, AnswerKind::Rings}};
             }
             depth = 0;
             break;
@@ -378,7 +376,8 @@ Detected detect(std::string_view text) {
     }
     switch (depth) {
         case 2:
-            return {AnswerKind::Faces, "a list of id lists; --answer rings if it has one ring per bounded face",
+            return {AnswerKind::Faces,
+                    "a list of id lists; --answer rings if it has one ring per bounded face",
                     {AnswerKind::Faces, AnswerKind::Rings}};
         case 3:
             // [x, y] positions; a ring of two ids would be no ring. (A bare

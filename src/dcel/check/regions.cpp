@@ -52,8 +52,7 @@ Chain to_chain(const std::map<Index, int>& counts) {
 
 std::string face_text(const detail::Reference& ref, FaceId f) {
     const Dcel& d = ref.dcel();
-    return "face " + f.str() + " (outer boundary " + detail::cycle_text(ref.cycle_vertices(ref.cycle_of(d.outer(f)))) +
-           ")";
+    return "face " + f.str() + " (outer boundary " + detail::cycle_text(ref.cycle_vertices(ref.cycle_of(d.outer(f)))) + ")";
 }
 
 // The reference's chain for every bounded face (index: face id; face 0, the
@@ -144,8 +143,9 @@ public:
         for (Index f = 1; f < d_.num_faces(); ++f) {
             if (explained[f] != 0 || !out_.wants(DifferenceKind::MissingFace)) continue;
             const std::vector<Index> vs = ref_.cycle_vertices(ref_.cycle_of(d_.outer(FaceId(f))));
-            out_.add(DifferenceKind::MissingFace, "the reference's " + face_text(ref_, FaceId(f)) + " has no " +
-                                                      std::string(rings_ ? "ring" : "polygon") + " in the answer",
+            out_.add(DifferenceKind::MissingFace,
+                     "the reference's " + face_text(ref_, FaceId(f)) + " has no " +
+                         std::string(rings_ ? "ring" : "polygon") + " in the answer",
                      vs);
         }
         Report report = std::move(out_).finish();
@@ -216,9 +216,9 @@ private:
                         out_.add(DifferenceKind::VertexCount,
                                  ring_label(p, r) + " names vertex " + std::to_string(shown) + ", but the graph has " +
                                      std::to_string(d_.num_vertices()) + " vertices" +
-                                     (conventions_.one_based ? " (ids 1 to " + std::to_string(d_.num_vertices()) +
-                                                                   " with --one-based)"
-                                                             : ""));
+                                     (conventions_.one_based
+                                          ? " (ids 1 to " + std::to_string(d_.num_vertices()) + " with --one-based)"
+                                          : ""));
                     }
                     ok = false;
                     return {};
@@ -277,8 +277,9 @@ private:
         const bool want_ccw = shell != conventions_.face_on_right;
         if (!rings_ && !conventions_.unoriented && ccw != want_ccw && out_.wants(DifferenceKind::WrongOrientation)) {
             out_.add(DifferenceKind::WrongOrientation,
-                     ring_label(p, r) + " " + detail::cycle_text(vs) + " runs " + (want_ccw ? "clockwise" : "counterclockwise") +
-                         "; a " + (shell ? "shell" : "hole") + " runs " + (want_ccw ? "counterclockwise" : "clockwise") +
+                     ring_label(p, r) + " " + detail::cycle_text(vs) + " runs " +
+                         (want_ccw ? "clockwise" : "counterclockwise") + "; a " + (shell ? "shell" : "hole") + " runs " +
+                         (want_ccw ? "counterclockwise" : "clockwise") +
                          (conventions_.face_on_right ? " with --face-on right" : " (GeoJSON's right-hand rule)"),
                      vs);
         }
@@ -317,8 +318,8 @@ private:
         bool one_face = true;
         for (const Index h : chain) {
             const FaceId f = d_.face(HalfEdgeId(h));
-            const bool on_chain =
-                f != Dcel::kUnboundedFace && std::binary_search(chains_[f.index()].begin(), chains_[f.index()].end(), h);
+            const bool on_chain = f != Dcel::kUnboundedFace &&
+                                  std::binary_search(chains_[f.index()].begin(), chains_[f.index()].end(), h);
             if (!on_chain || (!only.is_null() && f != only)) {
                 one_face = false;
                 break;
@@ -329,8 +330,7 @@ private:
             explained[only.index()] = 1;
             if (out_.wants(DifferenceKind::WrongHole)) {
                 out_.add(DifferenceKind::WrongHole,
-                         shown + " is " + face_text(ref_, only) + " without " +
-                             missing_text(chains_[only.index()], chain),
+                         shown + " is " + face_text(ref_, only) + " without " + missing_text(chains_[only.index()], chain),
                          shell);
             }
             return;
@@ -354,9 +354,11 @@ private:
                                           [&](Index h) { return ref_.cycle_of(HalfEdgeId(h)) == outer; });
         const bool on_holes = std::any_of(lacking.begin(), lacking.end(),
                                           [&](Index h) { return ref_.cycle_of(HalfEdgeId(h)) != outer; });
-        std::string s = on_outer && on_holes ? "boundary edges on its outer cycle and its holes"
-                        : on_outer           ? "edges of its outer boundary"
-                                             : "a hole";
+        // "Outer cycle" in the DCEL's sense: a triangle joined to the shell by
+        // a bridge is on it, though a polygonizer makes it a hole.
+        std::string s = on_outer && on_holes ? "edges of its outer cycle and of its holes"
+                        : on_outer           ? "edges of its outer cycle"
+                                             : "edges of its holes";
         s += ": ";
         for (std::size_t i = 0; i < std::min(kShown, lacking.size()); ++i) {
             const HalfEdgeId h(lacking[i]);

@@ -12,8 +12,7 @@ namespace dcel::gen {
 namespace {
 
 constexpr std::array<CoordinateClass, 5> kClasses{CoordinateClass::SmallIntegers, CoordinateClass::Normal,
-                                                   CoordinateClass::Huge, CoordinateClass::Tiny,
-                                                   CoordinateClass::Subnormal};
+                                                  CoordinateClass::Huge, CoordinateClass::Tiny, CoordinateClass::Subnormal};
 constexpr std::array<std::string_view, 5> kNames{"small-integers", "normal", "huge", "tiny", "subnormal"};
 
 constexpr double kSmall = 0x1p31;

@@ -35,7 +35,6 @@ enum class CoordinateClass : std::uint8_t { SmallIntegers, Normal, Huge, Tiny, S
 // exact map that keeps every orientation: a power-of-two scaling, then for
 // `normal` an exact translation; some zeros become -0.0. nullopt when the
 // graph is not of that form (its class is then its own). Deterministic in seed.
-[[nodiscard]] std::optional<PlanarGraph> to_coordinate_class(const PlanarGraph& g, CoordinateClass c,
-                                                             std::uint64_t seed);
+[[nodiscard]] std::optional<PlanarGraph> to_coordinate_class(const PlanarGraph& g, CoordinateClass c, std::uint64_t seed);
 
 }  // namespace dcel::gen

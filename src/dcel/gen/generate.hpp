@@ -107,6 +107,7 @@ private:
     PlanarGraph g_;
     std::size_t fractions_ = 0;  // non-integer coordinates of g_
     Stage stage_ = Stage::Empty;
+    bool isolated_first_ = false;
     Position last_;
     std::size_t index_ = 0;
     std::size_t chunk_ = 0;

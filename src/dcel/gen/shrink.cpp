@@ -228,10 +228,22 @@ ShrinkCandidates::ShrinkCandidates(PlanarGraph g) : ShrinkCandidates(std::move(g
 ShrinkCandidates::ShrinkCandidates(PlanarGraph g, Position start) : g_(std::move(g)), fractions_(non_integers(g_)) {
     chunk_ = g_.edges.size();
     stage_ = start.stage == Stage::Done ? Stage::Empty : start.stage;
+    // Resuming past it, the one cheap candidate that drops every isolated
+    // vertex still comes first: removing edges leaves vertices bare.
+    isolated_first_ = stage_ > Stage::Isolated;
     if (stage_ == Stage::Edges && start.chunk != 0) chunk_ = std::min(start.chunk, chunk_);
 }
 
 std::optional<PlanarGraph> ShrinkCandidates::next() {
+    if (isolated_first_) {
+        isolated_first_ = false;
+        std::vector<char> isolated(g_.vertices.size(), 1);
+        for (const GraphEdge& ge : g_.edges) isolated[ge.u.index()] = isolated[ge.v.index()] = 0;
+        if (std::count(isolated.begin(), isolated.end(), 1) > 1) {
+            last_ = {Stage::Isolated, 0};
+            return without_vertices(g_, isolated);
+        }
+    }
     for (;;) {
         const Position here{stage_, stage_ == Stage::Edges ? chunk_ : 0};
         std::optional<PlanarGraph> c = step();

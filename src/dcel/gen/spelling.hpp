@@ -18,18 +18,18 @@ namespace dcel::gen {
 
 struct Spelling {
     enum class Numbers : std::uint8_t {
-        Shortest,       // std::to_chars' shortest form, as `dcel faces` writes: 3, -0, 1e+16, 5e-324
-        Scientific,     // 3e0, -0e0, 1e16, 4.9406564584124654e-324 -> 5e-324 (shortest digits, no '+')
-        ScientificPlus, // 3E+00 style: capital E, explicit sign, as C's printf("%E") writes
-        Decimal,        // integral values as 3.0, -0 as -0.0, others shortest
-        Mixed,          // each number in one of the forms above, chosen per number
+        Shortest,        // std::to_chars' shortest form, as `dcel faces` writes: 3, -0, 1e+16, 5e-324
+        Scientific,      // 3e0, -0e0, 1e16, 4.9406564584124654e-324 -> 5e-324 (shortest digits, no '+')
+        ScientificPlus,  // 3E+00 style: capital E, explicit sign, as C's printf("%E") writes
+        Decimal,         // integral values as 3.0, -0 as -0.0, others shortest
+        Mixed,           // each number in one of the forms above, chosen per number
     };
     Numbers numbers = Numbers::Shortest;
-    bool positional = false;     // [[[x, y], ...], [[u, v], ...]] instead of the object form
-    bool edges_first = false;    // object form: "edges" before "vertices"
-    bool compact = false;        // no spaces at all
-    bool newlines = false;       // one vertex and one edge per line (never in a --stream line)
-    std::uint64_t seed = 0;      // for Mixed: which form each value takes (the same value, the same form)
+    bool positional = false;   // [[[x, y], ...], [[u, v], ...]] instead of the object form
+    bool edges_first = false;  // object form: "edges" before "vertices"
+    bool compact = false;      // no spaces at all
+    bool newlines = false;     // one vertex and one edge per line (never in a --stream line)
+    std::uint64_t seed = 0;    // for Mixed: which form each value takes (the same value, the same form)
 
     // The spelling `dcel faces` and `dcel gen` use: shortest numbers, object form, spaces.
     [[nodiscard]] static Spelling plain() { return {}; }
