@@ -55,8 +55,9 @@ Outcome failed(FailureKind kind, std::string what, const ProcessResult& run) {
 // The answer's cycles, for drawing: faces as given (1-based ids shifted, a
 // repeated first vertex dropped), polygon and ring rings by vertex id.
 std::vector<std::vector<Index>> cycles_of(const check::Answer& a, const check::Conventions& c) {
+    constexpr std::size_t kMaxDrawnIds = 100000;  // a drawing of more says nothing; keep memory small
     std::vector<std::vector<Index>> out;
-    if (a.kind != check::AnswerKind::Faces) return out;
+    if (a.kind != check::AnswerKind::Faces || a.cycles.ids.size() > kMaxDrawnIds) return out;
     for (std::size_t i = 0; i < a.cycles.size(); ++i) {
         const std::span<const Index> given = a.cycles[i];
         std::vector<Index> vs(given.begin(), given.end());

@@ -17,8 +17,23 @@ namespace {
 
 // Faces: a repeated first vertex dropped, 1-based ids shifted, cycles
 // reversed for faces on the right; then matched like compare_faces.
+bool needs_rewriting(const CycleList& answer, const Conventions& c) {
+    if (c.one_based || c.face_on_right) return true;
+    for (std::size_t i = 0; i < answer.size(); ++i) {
+        const std::span<const Index> cycle = answer[i];
+        if (cycle.size() >= 2 && cycle.front() == cycle.back()) return true;
+    }
+    return false;
+}
+
 Report compare_cycles(const Dcel& reference, const CycleList& answer, const Conventions& c) {
     detail::Collector out;
+    if (!needs_rewriting(answer, c)) {
+        // As given: no copy (an answer may hold millions of cycles).
+        const detail::Reference ref(reference);
+        (void)detail::match_cycles(ref, detail::AnswerCycles{&answer, {}}, out);
+        return std::move(out).finish();
+    }
     CycleList list;
     std::vector<std::size_t> numbering;
     std::size_t closed = 0;
