@@ -9,7 +9,8 @@
 
 #include "commands.hpp"
 #include "dcel/build.hpp"
-#include "dcel/io/svg.hpp"
+#include "dcel/check/counterexample_svg.hpp"
+#include "dcel/io/dcel_json.hpp"
 #include "diff_report.hpp"
 #include "diff_session.hpp"
 
@@ -40,14 +41,13 @@ std::string svg_title(const DiffOptions& options, const Counterexample& c) {
 }
 
 void write_svg(const std::string& path, const DiffOptions& options, const Counterexample& c) {
-    io::SvgOptions svg;
-    svg.title = svg_title(options, c);
-    if (c.outcome.kind == FailureKind::WrongAnswer) {
-        const auto& cycle = c.outcome.report.differences.front().vertices;
-        if (!cycle.empty()) svg.highlight_cycles.push_back(cycle);
-    }
+    const Dcel reference = build(c.graph);
+    check::CounterexampleDrawing drawing{&c.graph, &reference};
+    drawing.title = svg_title(options, c);
+    drawing.answer_name = "the command: " + options.impl;
+    if (c.outcome.kind == FailureKind::WrongAnswer) drawing.answer_cycles = io::read_faces_answer(c.outcome.run.out);
     std::ofstream out(path, std::ios::binary);
-    out << io::render_svg(build(c.graph), svg);
+    out << check::render_counterexample_svg(drawing);
     if (!out.flush()) throw UsageError("cannot write " + path);
 }
 
