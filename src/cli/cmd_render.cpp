@@ -33,8 +33,8 @@ void add_render_command(CLI::App& app, Action& action) {
         "and graphs of up to 40 vertices get a table of them.\n"
         "Frames: exact keeps proportions (one scale); normalised stretches each axis on its\n"
         "own, keeping the order of the x's and of the y's, so that points 1 apart near 1e15\n"
-        "or subnormals stay apart; auto (the default) is exact unless that would draw two\n"
-        "points within 6 px. Edges that would leave a vertex in nearly one direction are\n"
+        "stay apart; auto (the default) is exact unless that would draw two points within\n"
+        "6 px. Edges that would leave a vertex in nearly one direction are\n"
         "drawn spread apart in their exact order, bending towards their other end.\n"
         "Example:\n"
         "  dcel gen --family nested-polygons --seed 3 --vertices 20 | dcel render - -o nested.svg");
