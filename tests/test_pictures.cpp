@@ -79,6 +79,22 @@ std::set<Index> inset_vertices(const std::string& svg) {
     return out;
 }
 
+// Per inset vertex, how many wrong turns its text counts there (the one
+// drawn and "N more wrong turns here").
+std::map<Index, std::size_t> turns_per_inset(const std::string& svg) {
+    static const std::regex inset(R"re(<g class="inset" data-vertex="([0-9]+)")re");
+    static const std::regex more(R"re(>([0-9]+) more wrong turns? here)re");
+    std::map<Index, std::size_t> out;
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), inset); it != std::sregex_iterator(); ++it) {
+        const auto begin = svg.begin() + (*it).position(0);
+        const auto end = svg.begin() + static_cast<std::ptrdiff_t>(svg.find("</g>\n<g class=\"inset\"", (*it).position(0) + 1));
+        std::smatch m;
+        const std::string text(begin, end > begin ? end : svg.end());
+        out[static_cast<Index>(std::stoul((*it)[1]))] = 1 + (std::regex_search(text, m, more) ? std::stoul(m[1]) : 0);
+    }
+    return out;
+}
+
 // The vertices v of the report's wrong-next differences (it reports them in
 // the cycles it cannot explain otherwise, not in reversed ones) ("at vU->vV the answer ...").
 std::set<Index> wrong_next_vertices(const dcel::check::Report& report) {
@@ -114,6 +130,11 @@ TEST(Pictures, HeadlineCounterexample) {
     const std::set<Index> expected = wrong_next_vertices(dcel::check::compare_faces(d, answer));
     EXPECT_EQ(expected, std::set<Index>{3});
     EXPECT_EQ(inset_vertices(svg), expected);
+    // Three wrong turns at v3, by hand: the answer goes 4 -> 1, 1 -> 0, 0 -> 2
+    // where the reference goes 4 -> 0, 1 -> 2, 0 -> 1 (2 -> 4 agrees); the
+    // report lists the same three.
+    EXPECT_EQ(turns_per_inset(svg), (std::map<Index, std::size_t>{{3, 3}}));
+    EXPECT_EQ(dcel::check::compare_faces(d, answer).differences.size(), 5U);  // 3 wrong-next, a missing and an extra cycle
     // Both names are in the picture.
     EXPECT_NE(svg.find(">the reference (dcel)</text>"), std::string::npos);
     EXPECT_NE(svg.find("the command: DCEL_EXAMPLE_BUG=atan2"), std::string::npos);
@@ -195,6 +216,13 @@ TEST(Pictures, GeneratedCounterexamples) {
         const std::set<Index> insets = inset_vertices(svg);
         EXPECT_EQ(insets.size(), std::min<std::size_t>(6, wrong.size())) << name;
         for (const Index v : insets) EXPECT_EQ(wrong.count(v), 1U) << name << ": an inset at v" << v;
+        // At a turned vertex every edge arriving there turns wrong: as many
+        // wrong turns as the vertex has edges.
+        for (const auto& [v, turns] : turns_per_inset(svg)) {
+            std::size_t degree = 0;
+            for (const dcel::HalfEdgeId h : d.around_origin_cw(d.out(dcel::VertexId(v)))) degree += h.is_null() ? 0 : 1;
+            EXPECT_EQ(turns, degree) << name << ": v" << v;
+        }
         // The others are named in the note.
         for (const Index v : wrong) {
             if (insets.count(v) != 0) continue;
