@@ -131,8 +131,7 @@ void paint_answer_cycles(std::string& out, const DrawnDcel& g, const Counterexam
                          const std::vector<Inset>& insets) {
     const auto by_ends = half_edges_by_ends(g.dcel());
     out += "<g id=\"answer-cycles\">\n";
-    for (std::size_t c = 0; c < in.answer_cycles.size(); ++c) {
-        const auto& cycle = in.answer_cycles[c];
+    for (const auto& cycle : in.answer_cycles) {
         const auto match = ref.face_of.find(canonical(cycle));
         const std::string ink = match != ref.face_of.end() ? io::svg::face_ink(match->second) : kExtraInk;
         for (std::size_t i = 0; i < cycle.size(); ++i) {
@@ -179,8 +178,11 @@ void paint_answer_polygons(std::string& out, const DrawnDcel& g, const Counterex
             if (drawn.size() > 2) d += io::svg::path_data(drawn, true);
         }
         const bool good = all_match && face;
-        out += "<path class=\"answer-region" + std::string(good ? "" : " extra") + "\" d=\"" + d + "\" fill=\"" +
-               (good ? io::svg::face_fill(*face) : "#f4a582") + "\" fill-opacity=\"0.8\"/>" + outline + "\n";
+        out += "<path class=\"answer-region";
+        out += good ? "" : " extra";
+        out += "\" d=\"" + d + "\" fill=\"";
+        out += good ? io::svg::face_fill(*face) : "#f4a582";
+        out += "\" fill-opacity=\"0.8\"/>" + outline + "\n";
     }
     out += "</g>\n";
 }
@@ -189,7 +191,7 @@ void paint_answer_polygons(std::string& out, const DrawnDcel& g, const Counterex
 io::svg::HalfEdgeStyle reference_style(const DrawnDcel& g, const ReferenceCycles& ref,
                                        const std::map<std::vector<Index>, std::size_t>& answer_cycles, bool cycles_given) {
     return [&g, &ref, &answer_cycles, cycles_given](HalfEdgeId h) -> std::optional<ArrowStyle> {
-        const bool missing = cycles_given && answer_cycles.count(ref.cycle_of_half_edge[h.index()]) == 0;
+        const bool missing = cycles_given && !answer_cycles.contains(ref.cycle_of_half_edge[h.index()]);
         return ArrowStyle{io::svg::face_ink(g.dcel().face(h).index()), missing ? 1.8 : 1.3, 4.5, missing ? "4 3" : "",
                           missing ? "half-edge missing" : "half-edge"};
     };
@@ -213,7 +215,8 @@ std::string shortened(const std::string& s, std::size_t max) { return s.size() <
 
 }  // namespace
 
-std::string render_counterexample_svg(const CounterexampleDrawing& in) {
+std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
+    const CounterexampleDrawing& in = drawing;
     const std::string title = in.title.empty() ? "counterexample: " + in.answer_name + " against " + in.reference_name
                                                : in.title;
     if (in.reference == nullptr) {
@@ -369,7 +372,7 @@ std::string render_counterexample_svg(const CounterexampleDrawing& in) {
     for (const std::string& line : left.frame->note()) caption.emplace_back(line, io::svg::kNoteInk);
     if (!left_out.empty()) {
         std::string list;
-        for (std::size_t i = 0; i < left_out.size() && i < 12; ++i) list += (i ? ", " : "") + left_out[i];
+        for (std::size_t i = 0; i < left_out.size() && i < 12; ++i) list += (i > 0 ? ", " : "") + left_out[i];
         caption.emplace_back("no room for the labels of " + list + (left_out.size() > 12 ? ", ..." : ""), io::svg::kNoteInk);
     }
     double width = std::max({width_panels, width_insets, io::svg::text_width(subtitle, kFont) + 2 * kPad,

@@ -97,7 +97,7 @@ std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
     if (!table) caption.emplace_back("true coordinates: hover over a vertex");
     if (!left_out.empty()) {
         std::string list;
-        for (std::size_t i = 0; i < left_out.size() && i < 12; ++i) list += (i ? ", " : "") + left_out[i];
+        for (std::size_t i = 0; i < left_out.size() && i < 12; ++i) list += (i > 0 ? ", " : "") + left_out[i];
         if (left_out.size() > 12) list += ", and " + std::to_string(left_out.size() - 12) + " more";
         caption.push_back("no room for the labels of " + list);
     }

@@ -117,6 +117,7 @@ DrawnDcel::DrawnDcel(const Dcel& d, const Frame& frame) : d_(&d) {
         for (const HalfEdgeId h : d.around_origin_cw(first)) ring.push_back(h);
         degree[v] = ring.size();
         std::vector<double> drawn;
+        drawn.reserve(ring.size());
         for (const HalfEdgeId h : ring) drawn.push_back(straight[h.index()]);
         const std::vector<double> spread = spread_clockwise(drawn, kMinGap);
         for (std::size_t i = 0; i < ring.size(); ++i) shown[ring[i].index()] = spread[i];

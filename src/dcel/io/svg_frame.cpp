@@ -34,7 +34,9 @@ Bounds bounds(const std::vector<Point>& points) {
 }
 
 // The monotone stretch of one axis: each distinct value (-0 and 0 are one)
-// to [0, 1], gaps at least a third of the mean gap.
+// to [0, 1]: each gap its share of the whole span, but at least the share
+// of an even spacing; so at least half of that once the shares are scaled
+// back to sum 1.
 std::map<double, double> stretch(const std::vector<double>& values) {
     std::map<double, double> at;
     for (const double v : values) at.emplace(v, 0.0);
@@ -47,7 +49,7 @@ std::map<double, double> stretch(const std::vector<double>& values) {
         total += gaps.back();
         previous = it->first;
     }
-    const double floor = 0.5 / static_cast<double>(gaps.size());
+    const double floor = 1.0 / static_cast<double>(gaps.size());
     double sum = 0;
     for (double& g : gaps) {
         g = std::max(total > 0 ? g / total : 0.0, floor);

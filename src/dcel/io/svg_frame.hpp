@@ -4,9 +4,10 @@
 //    one pixel;
 //  - normalised: each axis on its own, by a monotone stretch: the distinct
 //    values of an axis keep their order, and a gap between neighbouring values
-//    is drawn at least a third of the average gap wide, larger gaps in
-//    proportion to their size. No two distinct points share a pixel, left and
-//    right, above and below are kept; lengths and angles are not.
+//    is drawn at least half as wide as in an even spacing of them, gaps above
+//    the mean wider in proportion to their size. No two distinct points share
+//    a pixel, left and right, above and below are kept; lengths and angles
+//    are not.
 // Auto picks exact unless it would put two distinct points within a few px.
 // The drawing is approximate (doubles); nothing is decided from it.
 #pragma once
