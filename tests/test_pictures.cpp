@@ -87,7 +87,8 @@ std::map<Index, std::size_t> turns_per_inset(const std::string& svg) {
     std::map<Index, std::size_t> out;
     for (auto it = std::sregex_iterator(svg.begin(), svg.end(), inset); it != std::sregex_iterator(); ++it) {
         const auto begin = svg.begin() + (*it).position(0);
-        const auto end = svg.begin() + static_cast<std::ptrdiff_t>(svg.find("</g>\n<g class=\"inset\"", (*it).position(0) + 1));
+        const auto end = svg.begin() +
+                         static_cast<std::ptrdiff_t>(svg.find("</g>\n<g class=\"inset\"", (*it).position(0) + 1));
         std::smatch m;
         const std::string text(begin, end > begin ? end : svg.end());
         out[static_cast<Index>(std::stoul((*it)[1]))] = 1 + (std::regex_search(text, m, more) ? std::stoul(m[1]) : 0);
@@ -293,6 +294,53 @@ TEST(Pictures, FramesAndNotes) {
     EXPECT_NE(svg.find("true coordinates"), std::string::npos);
     EXPECT_NE(svg.find("<title>v0 (268947842, 268947843)</title>"), std::string::npos);
     EXPECT_NE(svg.find("<title>v4 (-1, -0)</title>"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// A square with a triangle inside it (a hole) and an isolated vertex:
+// faces f1 (the square, holed) and f2 (the triangle).
+const char* const kSquareHole =
+    R"({"vertices": [[0, 0], [10, 0], [10, 10], [0, 10], [3, 3], [7, 3], [5, 7], [8, 8]],
+        "edges": [[0, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 4]]})";
+
+TEST(Pictures, RegionsAndOddAnswers) {
+    const dcel::PlanarGraph g = dcel::io::read_graph(kSquareHole);
+    const dcel::Dcel d = dcel::build(g);
+    // Regions: the holed square (its hole listed the other way round and from
+    // another vertex) and the triangle match; a triangle 0, 1, 2 does not.
+    dcel::check::CounterexampleDrawing regions{&g, &d};
+    regions.answer_polygons = {{{0, 1, 2, 3}, {4, 6, 5}}, {{6, 4, 5}}, {{0, 1, 2}}};
+    const std::string svg = dcel::check::render_counterexample_svg(regions);
+    save("regions", svg);
+    expect_legible_labels(svg, "regions");
+    const auto occurrences = [&](const std::string& what) {
+        std::size_t n = 0;
+        for (std::size_t at = svg.find(what); at != std::string::npos; at = svg.find(what, at + 1)) ++n;
+        return n;
+    };
+    const std::size_t matched = occurrences("class=\"answer-region\" ");
+    const std::size_t unmatched = occurrences("class=\"answer-region extra\"");
+    EXPECT_EQ(matched, 2U);
+    EXPECT_EQ(unmatched, 1U);
+    EXPECT_TRUE(inset_vertices(svg).empty());
+
+    // A cycle that arrives at v1 along 0 -> 1 and leaves for v6, which is no
+    // neighbour of v1: the inset at v1 says so (the reference goes on to v2).
+    dcel::check::CounterexampleDrawing odd{&g, &d};
+    odd.answer_cycles = {{0, 1, 6}};
+    const std::string odd_svg = dcel::check::render_counterexample_svg(odd);
+    save("not-a-neighbour", odd_svg);
+    expect_legible_labels(odd_svg, "not-a-neighbour");
+    EXPECT_EQ(inset_vertices(odd_svg), std::set<Index>{1});
+    EXPECT_NE(odd_svg.find("the reference goes on to v2 (next clockwise)"), std::string::npos);
+    EXPECT_NE(odd_svg.find("the answer goes on to v6 (not a neighbour)"), std::string::npos);
+
+    // Nothing to draw: said, not crashed.
+    const std::string empty = dcel::check::render_counterexample_svg({});
+    EXPECT_NE(empty.find("nothing to draw: no reference DCEL was given"), std::string::npos);
 }
 
 }  // namespace
