@@ -5,9 +5,9 @@
 // library (support/planted_solvers.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
@@ -58,16 +58,18 @@ TEST(CheckTestingSeeds, TheDefaultsAreRapidChecks) {
 }
 
 TEST(CheckTestingSeeds, Atan2OrderIsCaughtOnEverySeed) {
-    const SeedRun run = run_seeds([](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::atan2_faces, o); },
-                              {"wrong-next", "reversed-cycle"});
+    const SeedRun run = run_seeds(
+        [](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::atan2_faces, o); },
+        {"wrong-next", "reversed-cycle"});
     report("atan2 angular order (faces)", run);
     EXPECT_EQ(run.caught, kSeeds);
     EXPECT_EQ(run.missing, "");
 }
 
 TEST(CheckTestingSeeds, CounterclockwiseNextIsCaughtOnEverySeed) {
-    const SeedRun run = run_seeds([](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::ccw_faces, o); },
-                              {"reversed-cycle", "wrong-next"});
+    const SeedRun run = run_seeds(
+        [](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::ccw_faces, o); },
+        {"reversed-cycle", "wrong-next"});
     report("counterclockwise next (faces)", run);
     EXPECT_EQ(run.caught, kSeeds);
 }
@@ -83,19 +85,20 @@ TEST(CheckTestingSeeds, IsolatedVertexCrashIsCaughtOnEverySeed) {
 
 TEST(CheckTestingSeeds, HoleInTheWrongFaceIsCaughtOnEverySeed) {
     const SeedRun run = run_seeds(
-        [](const CheckOptions& o) { return dcel::check::dump_solver_agrees(planted::outer_hole_dump, o); }, {"wrong-hole", "hole-placement"});
+        [](const CheckOptions& o) { return dcel::check::dump_solver_agrees(planted::outer_hole_dump, o); },
+        {"wrong-hole", "hole-placement"});
     report("hole in the outermost face (dump)", run);
     EXPECT_EQ(run.caught, kSeeds);
     EXPECT_EQ(run.missing, "");
 }
 
 TEST(CheckTestingSeeds, RightSolversPassEverySeed) {
-    const SeedRun faces =
-        run_seeds([](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::right_faces, o); }, {});
+    const SeedRun faces = run_seeds(
+        [](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::right_faces, o); }, {});
     report("right solver (faces): failures", faces);
     EXPECT_EQ(faces.caught, 0);
-    const SeedRun dump =
-        run_seeds([](const CheckOptions& o) { return dcel::check::dump_solver_agrees(planted::right_dump, o); }, {});
+    const SeedRun dump = run_seeds(
+        [](const CheckOptions& o) { return dcel::check::dump_solver_agrees(planted::right_dump, o); }, {});
     report("right solver (dump): failures", dump);
     EXPECT_EQ(dump.caught, 0);
 }

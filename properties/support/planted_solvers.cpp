@@ -176,7 +176,8 @@ DcelDump dump(const PlanarGraph& g, Nesting nesting) {
     std::vector<Index> prev(next.size());
     for (Index h = 0; h < next.size(); ++h) prev[next[h]] = h;
     for (Index h = 0; h < half_edges(g); ++h) {
-        out.half_edges.push_back({VertexId(origin(g, h)), HalfEdgeId(h ^ 1U), HalfEdgeId(next[h]), HalfEdgeId(prev[h]), face[h]});
+        out.half_edges.push_back(
+            {VertexId(origin(g, h)), HalfEdgeId(h ^ 1U), HalfEdgeId(next[h]), HalfEdgeId(prev[h]), face[h]});
     }
     out.vertex_out.assign(g.vertices.size(), HalfEdgeId());
     for (Index h = 0; h < half_edges(g); ++h) {

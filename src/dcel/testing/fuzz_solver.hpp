@@ -74,9 +74,7 @@ private:
     std::size_t at_ = 0;
 };
 
-inline void erase_edge(PlanarGraph& g, std::size_t e) {
-    g.edges.erase(g.edges.begin() + static_cast<std::ptrdiff_t>(e));
-}
+inline void erase_edge(PlanarGraph& g, std::size_t e) { g.edges.erase(g.edges.begin() + static_cast<std::ptrdiff_t>(e)); }
 
 // Removes vertex v and its edges; later vertices shift down by one.
 inline void erase_vertex(PlanarGraph& g, Index v) {

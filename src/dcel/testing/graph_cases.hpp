@@ -68,7 +68,9 @@ inline std::vector<gen::Family> families_or_all(std::vector<gen::Family> familie
 
 inline rc::Gen<gen::Params> params(rc::Gen<gen::Family> family, rc::Gen<std::uint64_t> seed, rc::Gen<int> vertices) {
     return rc::gen::apply(
-        [](gen::Family f, std::uint64_t s, int n) { return gen::Params{f, s, static_cast<std::size_t>(n)}; },
+        [](gen::Family f, std::uint64_t s, int n) {
+            return gen::Params{f, s, static_cast<std::size_t>(n)};
+        },
         std::move(family), std::move(seed), std::move(vertices));
 }
 
@@ -87,8 +89,8 @@ struct Weighted {
 
 // Size-independent parameters of `family` (lo <= vertices < hi), when the
 // family is one of the allowed ones.
-inline void add_targeted(std::vector<Weighted>& mix, const std::vector<gen::Family>& allowed, int weight,
-                         gen::Family family, int lo, int hi) {
+inline void add_targeted(std::vector<Weighted>& mix, const std::vector<gen::Family>& allowed, int weight, gen::Family family,
+                         int lo, int hi) {
     for (const gen::Family f : allowed) {
         if (f == family) {
             mix.push_back({weight, params(rc::gen::just(f), unscaled(rc::gen::arbitrary<std::uint64_t>()),
@@ -162,8 +164,7 @@ inline rc::Seq<PlanarGraph> smaller_graphs(const PlanarGraph& g) {
 
 [[nodiscard]] inline rc::Gen<GraphCase> graph_cases(GraphCaseOptions options = {}) {
     const rc::Gen<gen::Params> params = graph_cases_detail::case_params(
-        graph_cases_detail::families_or_all(std::move(options.families)), options.vertices_per_size,
-        options.targeted);
+        graph_cases_detail::families_or_all(std::move(options.families)), options.vertices_per_size, options.targeted);
     return rc::gen::mapcat(rc::gen::noShrink(params), [](const gen::Params& p) {
         return rc::Gen<GraphCase>([p](const rc::Random&, int) {
             return rc::shrinkable::shrinkRecur(GraphCase{p, gen::generate(p)}, [](const GraphCase& c) {
