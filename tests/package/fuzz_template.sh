@@ -5,8 +5,9 @@
 # engine (LIB_FUZZING_ENGINE empty: replay_main.cpp runs the files it is given).
 # The harness must pass an input on which the stand-in solver is right, and
 # stop with the shrunk graph and the report on one where its atan2 order is
-# wrong (data/fuzz_template/atan2_star: bytes 09 4a, a near-degenerate graph of
-# 16 vertices, which libFuzzer found from an empty corpus).
+# wrong (data/fuzz_template/atan2_input: the one byte "1", family 49 mod 10 =
+# near-degenerate, seed 0, 16 vertices; libFuzzer found it from an empty
+# corpus).
 # Usage: fuzz_template.sh TEMPLATE PREFIX WORK CXX FLAGS DATA
 set -u
 template=$1 prefix=$2 work=$3 cxx=$4 flags=$5 data=$6
@@ -27,7 +28,7 @@ if [ "$status" -ne 0 ] || ! grep -q '^replay: 1 inputs ran without a failure$' "
     exit 1
 fi
 status=0
-"$fuzzer" "$data/atan2_star" > "$work/atan2.log" 2>&1 || status=$?
+"$fuzzer" "$data/atan2_input" > "$work/atan2.log" 2>&1 || status=$?
 cat "$work/atan2.log"
 if [ "$status" -eq 0 ]; then
     echo "FAIL: the harness passed the atan2 counterexample"

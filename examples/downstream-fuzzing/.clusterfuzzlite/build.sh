@@ -9,15 +9,17 @@
 #   2. this project's harnesses, copied into $OUT.
 # Runs in the project's root (the Dockerfile's WORKDIR), or in PROJECT_SRC.
 # Locally, from the project's root, the OSS-Fuzz way (libFuzzer, ASan, UBSan):
-#   CC=clang-14 CXX=clang++-14 CFLAGS="-O1 -g -fsanitize=address,undefined,fuzzer-no-link" \
-#   CXXFLAGS="-O1 -g -fsanitize=address,undefined,fuzzer-no-link" LIB_FUZZING_ENGINE=-fsanitize=fuzzer \
-#   WORK=/tmp/work OUT=/tmp/out DCEL_SRC=path/to/dcel .clusterfuzzlite/build.sh
-here=${PROJECT_SRC:-$PWD}
+#   CC=clang-14 CXX=clang++-14 CXXFLAGS="-O1 -g -fsanitize=address,undefined,fuzzer-no-link" \
+#   LIB_FUZZING_ENGINE=-fsanitize=fuzzer WORK=/tmp/work OUT=/tmp/out DCEL_SRC=path/to/dcel \
+#   .clusterfuzzlite/build.sh
+here=$(cd "${PROJECT_SRC:-$PWD}" && pwd)
 mkdir -p "$WORK" "$OUT"
+WORK=$(cd "$WORK" && pwd)  # relative paths (a local run) made absolute for CMake
+OUT=$(cd "$OUT" && pwd)
 if [ -z "${DCEL_PREFIX:-}" ]; then
   DCEL_PREFIX=$WORK/dcel-prefix
   # CMAKE_BUILD_TYPE=None adds no flags of its own: $CXXFLAGS are all.
-  cmake -S "${DCEL_SRC:-$here/third_party/dcel}" -B "$WORK/dcel-build" -G Ninja \
+  cmake -S "$(cd "${DCEL_SRC:-$here/third_party/dcel}" && pwd)" -B "$WORK/dcel-build" -G Ninja \
     -DCMAKE_CXX_COMPILER="$CXX" -DCMAKE_CXX_FLAGS="$CXXFLAGS" -DCMAKE_BUILD_TYPE=None \
     -DDCEL_DEVELOPER_MODE=OFF -DDCEL_BUILD_CLI=OFF
   cmake --build "$WORK/dcel-build"
