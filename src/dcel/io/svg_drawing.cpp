@@ -11,7 +11,7 @@ namespace {
 constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr double kDot = 2.8;      // vertex dot radius, px
 constexpr double kRing = 4;       // isolated vertex ring radius, px
-constexpr double kMinGap = 0.42;  // radians (24 degrees) between edges leaving a vertex, as drawn
+constexpr double kMinGap = 0.28;  // radians (16 degrees) between edges leaving a vertex, as drawn
 constexpr std::size_t kMaxVertexLabels = 2000;
 constexpr std::size_t kMaxFaceLabels = 1000;
 
