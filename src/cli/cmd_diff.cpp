@@ -14,7 +14,7 @@
 #include "answer_options.hpp"
 #include "commands.hpp"
 #include "dcel/build.hpp"
-#include "dcel/io/svg.hpp"
+#include "dcel/check/counterexample_svg.hpp"
 #include "diff_report.hpp"
 #include "diff_session.hpp"
 #include "option_values.hpp"
@@ -101,16 +101,18 @@ void write_file(const std::string& path, const std::string& text) {
     if (!out.flush()) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
 }
 
+// The counterexample with the reference and the answer side by side, and an
+// inset at each vertex where the answer turns differently (docs/pictures.md).
 std::string svg_of(const DiffOptions& options, const Failure& f) {
     const Counterexample& c = f.example;
-    io::SvgOptions svg;
-    svg.title = "dcel diff: " + failure_label(c.outcome) + ", case " + std::to_string(c.original.spec.number) + ", seed " +
-                std::to_string(options.schedule.seed);
-    if (c.outcome.kind == FailureKind::WrongAnswer) {
-        const auto& cycle = c.outcome.report.differences.front().vertices;
-        if (!cycle.empty()) svg.highlight_cycles.push_back(cycle);
-    }
-    return io::render_svg(build(c.graph), svg);
+    const Dcel reference = build(c.graph);
+    check::CounterexampleDrawing drawing{&c.graph, &reference};
+    drawing.title = "dcel diff: " + failure_label(c.outcome) + ", case " + std::to_string(c.original.spec.number) +
+                    ", seed " + std::to_string(options.schedule.seed);
+    drawing.answer_name = "the command: " + options.impl;
+    drawing.answer_cycles = c.outcome.answer_cycles;
+    drawing.answer_polygons = c.outcome.answer_polygons;
+    return check::render_counterexample_svg(drawing);
 }
 
 struct RawOptions {

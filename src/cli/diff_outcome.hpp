@@ -34,9 +34,10 @@ struct Outcome {
     check::Report report;  // the differences, for a wrong answer
     ProcessResult run;     // what the command did (a crash reported by sh as Signalled)
     check::AnswerKind answer_kind = check::AnswerKind::Faces;  // how the answer was read
-    // The answer as vertex cycles (faces, dump) or polygons of vertex rings
-    // (polygons, rings), for drawing; empty when it could not be read.
+    // For drawing: the answer as vertex cycles (faces, dump) or as polygons of
+    // vertex rings (polygons, rings); empty when it could not be read.
     std::vector<std::vector<Index>> answer_cycles;
+    std::vector<std::vector<std::vector<Index>>> answer_polygons;
 };
 
 // How a run reads answers: --answer and the conventions, and, when the kind
