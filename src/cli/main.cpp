@@ -8,15 +8,70 @@
 
 #include "commands.hpp"
 #include "dcel/error.hpp"
+#include "dcel/format.hpp"
+
+namespace {
+
+using namespace dcel::cli;
+
+// The longest CLI11 message shown; the rest is in --help.
+constexpr std::size_t kMaxUsageBytes = 300;
+
+// Every message is one line: pieces the user controls are escaped where
+// the message is made; this catches any that were not.
+void print_error(std::string_view message) {
+    const std::string line = dcel::needs_escaping(message) ? dcel::escape_for_message(message, 4096) : std::string(message);
+    std::fprintf(stderr, "dcel: %s\n", line.c_str());
+}
+
+std::string command_list(const CLI::App& app) {
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
+    return names;
+}
+
+// A usage error found by CLI11, in the form of every other message:
+// "dcel: gen: --vertices: expected ..., found "-1" (dcel gen --help)".
+// CLI11's words are kept; what it echoes from argv is escaped.
+std::string usage_message(const CLI::App& app, const CLI::ParseError& e, int argc, char** argv) {
+    const std::vector<CLI::App*> parsed = app.get_subcommands();
+    if (parsed.empty()) {
+        // No command recognised: name the word that is in the way.
+        for (int i = 1; i < argc; ++i) {
+            const std::string_view word = argv[i];
+            if (word == "--") break;
+            if (word.size() > 1 && word[0] == '-' &&
+                app.get_option_no_throw(std::string(word.substr(0, word.find('=')))) == nullptr) {
+                return "unknown option " + dcel::quote_for_message(word) + "; options go after the command (dcel --help)";
+            }
+        }
+        if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr) {
+            return "no command given; the commands are " + command_list(app) + " (dcel --help)";
+        }
+    }
+    std::string text = e.what();
+    if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
+        // CLI11 lists them last first; each is quoted here, escaped.
+        std::vector<std::string> extras = parsed.empty() ? app.remaining() : parsed.front()->remaining();
+        if (!extras.empty()) {
+            text = extras.size() == 1 ? "unexpected argument" : "unexpected arguments";
+            for (const std::string& word : extras) text += " " + dcel::quote_for_message(word, 60);
+        }
+    }
+    if (dcel::needs_escaping(text) || text.size() > kMaxUsageBytes) text = dcel::escape_for_message(text, kMaxUsageBytes);
+    const std::string name = parsed.empty() ? "" : parsed.front()->get_name();
+    return (name.empty() ? "" : name + ": ") + text + " (dcel " + (name.empty() ? "" : name + " ") + "--help)";
+}
+
+}  // namespace
 
 // Setting up the parser can throw only std::bad_alloc, and terminating is right then.
 int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
-    using namespace dcel::cli;
     CLI::App app{
         "dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
         "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",
         "dcel"};
-    app.set_version_flag("--version", DCEL_VERSION);
+    app.set_version_flag("--version", std::string("dcel ") + DCEL_VERSION + " (commit " + DCEL_COMMIT + ")");
     app.require_subcommand(1);
     app.fallthrough(false);
     Action action;
@@ -34,37 +89,42 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     // and list the commands instead.
     if (argc > 1 && argv[1][0] != '-') {
         const std::string_view word = argv[1];
-        std::string names;
         bool known = false;
-        for (const CLI::App* sub : std::as_const(app).get_subcommands({})) {
-            known = known || sub->get_name() == word;
-            names += (names.empty() ? "" : ", ") + sub->get_name();
-        }
+        for (const CLI::App* sub : std::as_const(app).get_subcommands({})) known = known || sub->get_name() == word;
         if (!known) {
-            std::fprintf(stderr, "dcel: unknown command \"%s\"; the commands are %s (dcel --help)\n", argv[1],
-                         names.c_str());
+            print_error("unknown command " + dcel::quote_for_message(word) + "; the commands are " +
+                        command_list(std::as_const(app)) + " (dcel --help)");
             return kExitUsage;
         }
     }
     try {
         app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitUsage;  // the help, on stdout
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitUsage;
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e) == 0 ? kExitOk : kExitUsage;
     } catch (const CLI::ParseError& e) {
-        const int code = app.exit(e);  // prints help (stdout) or the error (stderr)
-        return code == 0 ? kExitOk : kExitUsage;
+        print_error(usage_message(app, e, argc, argv));
+        return kExitUsage;
+    } catch (const UsageError& e) {
+        print_error(e.what());
+        return kExitUsage;
     }
     try {
         return action();
     } catch (const dcel::InvalidInput& e) {
-        std::fprintf(stderr, "dcel: %s\n", e.what());
+        print_error(e.what());
         return kExitInvalid;
     } catch (const dcel::TopologyError& e) {  // an edit refused
-        std::fprintf(stderr, "dcel: %s\n", e.what());
+        print_error(e.what());
         return kExitInvalid;
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "dcel: %s\n", e.what());
+        print_error(e.what());
         return kExitUsage;
     } catch (const std::bad_alloc&) {
-        std::fprintf(stderr, "dcel: out of memory: the input is too large for this machine\n");
+        print_error("out of memory: the input is too large for this machine");
         return kExitInvalid;
     }
 }
