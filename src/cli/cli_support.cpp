@@ -15,35 +15,6 @@ namespace dcel::cli {
 
 std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : escape_for_message(path); }
 
-std::string read_input(const std::string& path) {
-    std::FILE* f = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
-    if (f == nullptr) throw UsageError("cannot open " + display_name(path) + ": " + std::strerror(errno));
-    std::string text;
-    // Reserve a regular file's size up front: no regrowth copies of a large input.
-    if (f != stdin && std::fseek(f, 0, SEEK_END) == 0) {
-        const long size = std::ftell(f);
-        if (size > 0) text.reserve(static_cast<std::size_t>(size));
-        std::rewind(f);
-    }
-    char buffer[1 << 16];
-    std::size_t n = 0;
-    while ((n = std::fread(buffer, 1, sizeof buffer, f)) > 0) text.append(buffer, n);
-    const bool failed = std::ferror(f) != 0;
-    if (f != stdin) std::fclose(f);
-    if (failed) throw UsageError("cannot read " + display_name(path));
-    return text;
-}
-
-PlanarGraph load_graph(const std::string& path) {
-    const std::string text = read_input(path);
-    return with_source(path, [&] { return io::read_graph(text); });
-}
-
-void write_stdout(std::string_view text) {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    std::fflush(stdout);
-}
-
 // ---------------------------------------------------------------- numbers
 
 namespace {
@@ -102,6 +73,26 @@ std::string check_number(std::string_view word, const NumberRange& r, double& va
     return {};
 }
 
+// Digits and an optional K, M, G or T (powers of 1024).
+std::string check_byte_size(std::string_view word, std::uint64_t& value) {
+    int shift = 0;
+    std::string_view digits = word;
+    if (!digits.empty()) {
+        const std::string_view units = "KMGT";
+        if (const std::size_t k = units.find(digits.back()); k != std::string_view::npos) {
+            shift = 10 * static_cast<int>(k + 1);
+            digits.remove_suffix(1);
+        }
+    }
+    const std::uint64_t max = std::numeric_limits<std::uint64_t>::max() >> shift;
+    if (!check_unsigned(digits, 0, max, value).empty()) {
+        return "expected a size in bytes below 2^64: digits, optionally followed by K, M, G or T (powers of 1024)" +
+               found(word);
+    }
+    value <<= shift;
+    return {};
+}
+
 }  // namespace
 
 std::uint64_t parse_unsigned(std::string_view word, std::string_view what, std::uint64_t min, std::uint64_t max) {
@@ -120,12 +111,30 @@ double parse_number(std::string_view word, std::string_view what, NumberRange ra
     return value;
 }
 
+std::uint64_t parse_byte_size(std::string_view word, std::string_view what) {
+    std::uint64_t value = 0;
+    if (std::string message = check_byte_size(word, value); !message.empty()) {
+        throw UsageError(std::string(what) + ": " + message);
+    }
+    return value;
+}
+
 double parse_coordinate(std::string_view word, std::string_view what) { return parse_number(word, what, {}); }
 
 CLI::Validator unsigned_in(std::uint64_t min, std::uint64_t max) {
     return {[min, max](std::string& word) {
                 std::uint64_t value = 0;
                 std::string message = check_unsigned(word, min, max, value);
+                if (message.empty()) word = std::to_string(value);
+                return message;
+            },
+            ""};
+}
+
+CLI::Validator byte_size() {
+    return {[](std::string& word) {
+                std::uint64_t value = 0;
+                std::string message = check_byte_size(word, value);
                 if (message.empty()) word = std::to_string(value);
                 return message;
             },

@@ -13,7 +13,7 @@ void add_faces_command(CLI::App& app, Action& action) {
     cmd->callback([&action, path] {
         action = [path] {
             const PlanarGraph g = load_graph(*path);
-            const Dcel d = with_source(*path, [&] { return build(g); });
+            const Dcel d = build_dcel(*path, g);
             write_stdout(io::write_faces_of(d));
             return kExitOk;
         };

@@ -38,11 +38,11 @@ void add_gen_command(CLI::App& app, Action& action) {
     cmd->add_option("--family", *family, "Graph family (see below)")->capture_default_str();
     cmd->add_option("--seed", *seed, "Seed (unsigned 64-bit)")
         ->type_name("UINT")
-        ->check(unsigned_in())
+        ->transform(unsigned_in())
         ->capture_default_str();
     cmd->add_option("--vertices", *vertices, "Target number of vertices, at most 10000")
         ->type_name("N")
-        ->check(unsigned_in(0, kMaxVertices))
+        ->transform(unsigned_in(0, kMaxVertices))
         ->capture_default_str();
     cmd->callback([&action, family, seed, vertices] {
         action = [family, seed, vertices] {

@@ -1,7 +1,12 @@
 // dcel: the command-line face of the exact reference DCEL.
 // Exit codes: 0 success, 1 invalid input or a difference found, 2 usage error.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
 #include <new>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -9,6 +14,7 @@
 #include "commands.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
+#include "status_line.hpp"
 
 namespace {
 
@@ -20,8 +26,49 @@ constexpr std::size_t kMaxUsageBytes = 300;
 // Every message is one line: pieces the user controls are escaped where
 // the message is made; this catches any that were not.
 void print_error(std::string_view message) {
+    StatusLine::stop();
     const std::string line = dcel::needs_escaping(message) ? dcel::escape_for_message(message, 4096) : std::string(message);
     std::fprintf(stderr, "dcel: %s\n", line.c_str());
+}
+
+// A closed stdin, stdout or stderr (`dcel faces >&-`) would hand its number
+// to the next file opened, and output meant for stdout would land in it.
+// Each closed one gets /dev/null opened the wrong way round instead, so that
+// reading stdin or writing stdout fails (EBADF) and is reported.
+void guard_standard_descriptors() {
+    for (int fd = 0; fd <= 2; ++fd) {
+        if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+        const int opened = ::open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY);
+        if (opened >= 0 && opened != fd) {
+            ::dup2(opened, fd);
+            ::close(opened);
+        }
+    }
+}
+
+// The exit code, after making sure that what went to stdout got there.
+int finish(int code) {
+    StatusLine::stop();
+    if (const std::string reason = flush_stdout(); !reason.empty()) {
+        std::fprintf(stderr, "dcel: cannot write to stdout: %s\n", reason.c_str());
+        return kExitUsage;
+    }
+    return code;
+}
+
+// --help and --version: CLI11's text, written to stdout with the same
+// checks as every other output.
+int print_help(CLI::App& app, const CLI::ParseError& e) {
+    std::ostringstream out;
+    std::ostringstream err;
+    const int code = app.exit(e, out, err);
+    try {
+        write_stdout(out.str());
+    } catch (const UsageError& failed) {
+        print_error(failed.what());
+        return kExitUsage;
+    }
+    return finish(code == 0 ? kExitOk : kExitUsage);
 }
 
 std::string command_list(const CLI::App& app) {
@@ -52,7 +99,7 @@ std::string usage_message(const CLI::App& app, const CLI::ParseError& e, int arg
     std::string text = e.what();
     if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
         // CLI11 lists them last first; each is quoted here, escaped.
-        std::vector<std::string> extras = parsed.empty() ? app.remaining() : parsed.front()->remaining();
+        const std::vector<std::string> extras = app.remaining(true);
         if (!extras.empty()) {
             text = extras.size() == 1 ? "unexpected argument" : "unexpected arguments";
             for (const std::string& word : extras) text += " " + dcel::quote_for_message(word, 60);
@@ -67,13 +114,20 @@ std::string usage_message(const CLI::App& app, const CLI::ParseError& e, int arg
 
 // Setting up the parser can throw only std::bad_alloc, and terminating is right then.
 int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
+    guard_standard_descriptors();
     CLI::App app{
         "dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
         "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",
         "dcel"};
     app.set_version_flag("--version", std::string("dcel ") + DCEL_VERSION + " (commit " + DCEL_COMMIT + ")");
     app.require_subcommand(1);
-    app.fallthrough(false);
+    // Global options may also come after the command: `dcel faces --max-input-bytes 1G big.json`.
+    app.fallthrough(true);
+    std::uint64_t max_input = kDefaultMaxInputBytes;
+    app.add_option("--max-input-bytes", max_input,
+                   "Refuse a file or stdin larger than this many bytes (K, M, G, T: powers of 1024; default 512M)")
+        ->type_name("BYTES")
+        ->transform(byte_size());
     Action action;
     add_faces_command(app, action);
     add_build_command(app, action);
@@ -100,11 +154,11 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-        return app.exit(e) == 0 ? kExitOk : kExitUsage;  // the help, on stdout
+        return print_help(app, e);
     } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e) == 0 ? kExitOk : kExitUsage;
+        return print_help(app, e);
     } catch (const CLI::CallForVersion& e) {
-        return app.exit(e) == 0 ? kExitOk : kExitUsage;
+        return print_help(app, e);
     } catch (const CLI::ParseError& e) {
         print_error(usage_message(app, e, argc, argv));
         return kExitUsage;
@@ -112,8 +166,12 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         print_error(e.what());
         return kExitUsage;
     }
+    set_max_input_bytes(max_input);
+    if (const std::vector<CLI::App*> parsed = app.get_subcommands(); !parsed.empty()) {
+        StatusLine::start(parsed.front()->get_name());
+    }
     try {
-        return action();
+        return finish(action());
     } catch (const dcel::InvalidInput& e) {
         print_error(e.what());
         return kExitInvalid;

@@ -43,7 +43,7 @@ edit)
     run "$D edit $map $tmp/busy.json"
     expect remove-vertex-with-edges 1 '^dcel: .*steps\[0\]: remove_isolated_vertex: .*v4'
     run "$D edit $map $data/edit/every_operation_script.json --graph-out $tmp/no/such/dir/g.json"
-    expect unwritable-graph-out 2 'cannot write'
+    expect unwritable-graph-out 2 '^dcel: cannot open .*/no/such/dir/g.json for writing: No such file or directory$'
     ;;
 locate)
     run "$D locate $map --points $data/locate/points.json"
