@@ -42,7 +42,7 @@ public:
 // The input size limit: no file or stdin larger than this is read (a
 // UsageError naming --max-input-bytes). The default keeps the heaviest
 // command within the memory of a 24 GiB machine: `dcel build` peaks at
-// about 30 times its input, `dcel faces` at about 7 times (docs/formats.md).
+// about 30 times its input, `dcel faces` at 5 to 10 times (docs/formats.md).
 inline constexpr std::uint64_t kDefaultMaxInputBytes = std::uint64_t{512} << 20;
 void set_max_input_bytes(std::uint64_t bytes);
 [[nodiscard]] std::uint64_t max_input_bytes();
