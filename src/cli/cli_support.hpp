@@ -47,11 +47,6 @@ inline constexpr std::uint64_t kDefaultMaxInputBytes = std::uint64_t{512} << 20;
 void set_max_input_bytes(std::uint64_t bytes);
 [[nodiscard]] std::uint64_t max_input_bytes();
 
-// A size in bytes as typed for --max-input-bytes: digits, optionally
-// followed by K, M, G or T (powers of 1024). UsageError naming `what`.
-[[nodiscard]] std::uint64_t parse_byte_size(std::string_view word, std::string_view what);
-[[nodiscard]] CLI::Validator byte_size();
-
 // The whole content of a file, or of stdin for "-", at most
 // max_input_bytes(). Directories, unreadable files and devices, and
 // inputs over the limit are UsageErrors. Peak memory: the input's size
@@ -118,10 +113,15 @@ struct NumberRange {
 // A coordinate: parse_number over all finite doubles.
 [[nodiscard]] double parse_coordinate(std::string_view word, std::string_view what);
 
+// A size in bytes as typed for --max-input-bytes: digits, optionally
+// followed by K, M, G or T (powers of 1024). UsageError naming `what`.
+[[nodiscard]] std::uint64_t parse_byte_size(std::string_view word, std::string_view what);
+
 // Validators for CLI::Option::transform(): the same rules and messages.
 [[nodiscard]] CLI::Validator unsigned_in(std::uint64_t min = 0,
                                          std::uint64_t max = std::numeric_limits<std::uint64_t>::max());
 [[nodiscard]] CLI::Validator number_in(NumberRange range);
+[[nodiscard]] CLI::Validator byte_size();
 
 }  // namespace dcel::cli
 
