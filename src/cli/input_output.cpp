@@ -196,7 +196,11 @@ void write_stdout(std::string_view text) {
     if (const std::string reason = flush_stdout(); !reason.empty()) {
         throw UsageError("cannot write to stdout: " + reason);
     }
-    StatusLine::set("writing the output");
+    if (::isatty(STDOUT_FILENO) != 0) {
+        StatusLine::stop();  // the output goes to the terminal the status line is on
+    } else {
+        StatusLine::set("writing the output");
+    }
     write_all(STDOUT_FILENO, text, "to stdout");
 }
 

@@ -365,6 +365,39 @@ def conventions():
     case("version", ["--version"], 0, None, out=r"^dcel \d+\.\d+\.\d+ \(commit ([0-9a-f]{12}|unknown)\)\n$")
     case("help", ["--help"], 0, None, out=r"--max-input-bytes")
     case("global-option-after-command", ["faces", "--max-input-bytes", "1K", SQUARE], 0, None, out=r'^\{"faces"')
+    status_line()
+
+
+def status_line():
+    """Progress on a long command: on a terminal only, once it has run a second."""
+    global ran
+    ran += 1
+    if not shutil.which("script"):
+        print("skip status-line: needs script (util-linux) for a terminal")
+        return
+    fifo = os.path.join(TMP, "slow.fifo")
+    os.mkfifo(fifo)
+
+    def write_late():  # dcel waits for the FIFO's writer meanwhile
+        time.sleep(1.6 * SLOW)
+        with open(fifo, "wb") as f:
+            f.write(open(SQUARE, "rb").read())
+
+    writer = threading.Thread(target=write_late)
+    writer.start()
+    run = subprocess.run(["script", "-qec", f"exec {DCEL} faces {fifo}", "/dev/null"], capture_output=True,
+                         timeout=20 * SLOW)
+    writer.join()
+    screen = run.stdout.decode("utf-8", "replace")
+    want = f"\r\x1b[Kdcel: faces: opening {fifo}"
+    # The line is erased before the output is written to the same terminal.
+    if want in screen and screen.index(want) < screen.find('\r\x1b[K{"faces": [['):
+        print(f"ok   status-line: {screen!r}"[:200])
+    else:
+        failures.append("status-line")
+        print(f"FAIL status-line: want {want!r}, erased, then the faces; got {screen!r}")
+    # Not on a terminal: nothing but the message or the output.
+    case("no-status-line-off-terminal", ["faces", SQUARE], 0, None, out=r'^\{"faces"')
 
 
 def processes():
