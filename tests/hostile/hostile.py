@@ -5,7 +5,8 @@ Each case runs dcel once and checks its exit code; that stderr is exactly one
 line of printable text (no raw control character, valid UTF-8) matching a
 pattern, or empty; what stdout must hold, if anything; and that the run
 stayed within a time and a peak-memory (max RSS) limit. The process cases
-also check with ps that nothing the implementation started outlives the run.
+also check with ps (or /proc without it) that nothing the implementation
+started outlives the run.
 
 Usage: hostile.py DCEL SOURCE_DIR SECTION [--slow FACTOR]
   SECTION: inputs, outputs, messages, options, conventions, processes,
@@ -408,17 +409,31 @@ def processes():
         counter[0] += 1
         return f"{900 + counter[0]}.{os.getpid()}"
 
+    def processes_now():
+        """(pid, command line) of every process: from ps, or from /proc where
+        ps is not installed (procps is not essential on Debian)."""
+        if shutil.which("ps"):
+            lines = subprocess.run(["ps", "-eo", "pid=,args="], capture_output=True, text=True).stdout.splitlines()
+            return [(int(p[0]), p[1] if len(p) > 1 else "") for p in (line.split(None, 1) for line in lines)]
+        found = []
+        for entry in os.listdir("/proc"):
+            try:
+                with open(f"/proc/{entry}/cmdline", "rb") as f:
+                    found.append((int(entry), f.read().replace(b"\0", b" ").decode(errors="replace").strip()))
+            except (ValueError, OSError):
+                continue
+        return found
+
     def survivors(m):
         def check():
             time.sleep(0.1)
-            lines = subprocess.run(["ps", "-eo", "pid=,args="], capture_output=True, text=True).stdout.splitlines()
-            left = [line.split(None, 1) for line in lines if line.split(None, 1)[1:] == [f"sleep {m}"]]
-            for pid, _ in left:  # ours (the unique mark): do not leave them to the machine
+            left = [pid for pid, args in processes_now() if args == f"sleep {m}"]
+            for pid in left:  # ours (the unique mark): do not leave them to the machine
                 try:
-                    os.kill(int(pid), signal.SIGKILL)
+                    os.kill(pid, signal.SIGKILL)
                 except ProcessLookupError:
                     pass
-            return f"{len(left)} process(es) of the implementation outlived dcel (ps)" if left else None
+            return f"{len(left)} process(es) of the implementation outlived dcel" if left else None
         return check
 
     hang = os.path.join(IMPLS, "escape_and_hang.sh")
@@ -444,11 +459,9 @@ def processes():
     def interrupt():
         started.wait()
         time.sleep(1.0 * SLOW)
-        out = subprocess.run(["ps", "-eo", "pid=,args="], capture_output=True, text=True).stdout
-        for line in out.splitlines():
-            parts = line.split(None, 1)
-            if parts[1:] and parts[1].startswith(DCEL + " diff --impl " + hang):
-                os.kill(int(parts[0]), signal.SIGTERM)
+        for pid, args in processes_now():
+            if args.startswith(DCEL + " diff --impl " + hang):
+                os.kill(pid, signal.SIGTERM)
 
     t = threading.Thread(target=interrupt)
     t.start()
