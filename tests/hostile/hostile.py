@@ -46,6 +46,20 @@ def tmpfile(name, content):
     return path
 
 
+NOBODY = ["setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "--"]
+NOBODY_TMP = tempfile.mkdtemp(prefix="dcel-hostile-nobody-")
+os.chmod(NOBODY_TMP, 0o777)
+
+
+def nobody_can_run_dcel():
+    """Whether DCEL runs as user nobody (to see permission errors as root)."""
+    if not shutil.which("setpriv"):
+        return False
+    env = dict(os.environ, LLVM_PROFILE_FILE=os.path.join(NOBODY_TMP, "%p.profraw"))
+    run = subprocess.run(NOBODY + [DCEL, "--version"], capture_output=True, env=env)
+    return run.returncode == 0
+
+
 def one_line_problem(err):
     """Why stderr is not one printable line, or None."""
     try:
@@ -73,14 +87,13 @@ def case(name, args, code, err, *, stdin=None, stdout=None, out=None, seconds=10
     global ran
     ran += 1
     argv = [DCEL] + list(args)
-    if as_nobody:
-        if os.geteuid() != 0:
-            pass  # already unprivileged: the permission bits apply
-        elif shutil.which("setpriv"):
-            argv = ["setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "--"] + argv
-        else:
-            print(f"skip {name}: needs setpriv to drop root")
+    env = dict(env or {})
+    if as_nobody and os.geteuid() == 0:  # (unprivileged already: the permission bits apply)
+        if not nobody_can_run_dcel():
+            print(f"skip {name}: root, and user nobody cannot run {DCEL} (setpriv missing or a private folder)")
             return
+        argv = NOBODY + argv
+        env["LLVM_PROFILE_FILE"] = os.path.join(NOBODY_TMP, "%p.profraw")  # coverage builds: a folder it may write
     if stdin is not None and stdin != "closed" and os.path.isdir(stdin):
         stdin_file = os.open(stdin, os.O_RDONLY)  # Python will not open() a directory
     else:
@@ -95,7 +108,7 @@ def case(name, args, code, err, *, stdin=None, stdout=None, out=None, seconds=10
         if stdout == "closed":
             os.close(1)
 
-    full_env = dict(os.environ, **(env or {}))
+    full_env = dict(os.environ, **env)
     started = time.monotonic()
     p = subprocess.Popen(argv, stdin=stdin_file, stdout=out_file, stderr=err_file, env=full_env,
                          preexec_fn=close_fds)
@@ -540,5 +553,6 @@ finally:
         for d in dirs:
             os.chmod(os.path.join(root, d), 0o755)
     shutil.rmtree(TMP, ignore_errors=True)
+    shutil.rmtree(NOBODY_TMP, ignore_errors=True)
 print(f"{ran - len(failures)} of {ran} passed" + (f"; failed: {', '.join(failures)}" if failures else ""))
 sys.exit(1 if failures else 0)
