@@ -14,7 +14,7 @@ namespace dcel::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr std::chrono::milliseconds kQuiet{1000};   // nothing shown for runs shorter than this
+constexpr std::chrono::milliseconds kQuiet{1000};  // nothing shown for runs shorter than this
 constexpr std::chrono::milliseconds kRedraw{200};
 
 // One status line per process. NOLINTBEGIN(cppcoreguidelines-avoid-non-const-global-variables)

@@ -62,7 +62,9 @@ TEST(ParseNumber, RangeInTheMessageIsShort) {
               "--time: expected a finite number greater than 0 and at most 1e+07, found \"0\"");
     EXPECT_EQ(refusal([&] { (void)parse_number("1e300", "--time", seconds); }),
               "--time: expected a finite number greater than 0 and at most 1e+07, found \"1e300\"");
-    EXPECT_EQ(refusal([] { (void)parse_number("-1", "--shrink-time", {0, 1e6}); }),
+    EXPECT_EQ(refusal([] {
+                  (void)parse_number("-1", "--shrink-time", {0, 1e6});
+              }),
               "--shrink-time: expected a finite number at least 0 and at most 1e+06, found \"-1\"");
 }
 
@@ -104,8 +106,7 @@ TEST(Validators, CheckAndRewriteForCli11) {
     app.add_option("--time", time)->transform(number_in({0, 1e7, true}));
     app.add_option("--bytes", bytes)->transform(byte_size());
 
-    EXPECT_EQ(parse(app, {"--cases", "0010", "--seed", "18446744073709551615", "--time", "2.5", "--bytes", "3K"}).error,
-              "");
+    EXPECT_EQ(parse(app, {"--cases", "0010", "--seed", "18446744073709551615", "--time", "2.5", "--bytes", "3K"}).error, "");
     EXPECT_EQ(cases, 10U);
     EXPECT_EQ(seed, UINT64_MAX);
     EXPECT_EQ(time, 2.5);

@@ -35,7 +35,10 @@ TEST(EscapeForMessage, ControlCharactersBecomeEscapes) {
     // C1 controls, written as UTF-8 (U+0085 next line, U+009B the 8-bit CSI).
     EXPECT_EQ(escape_for_message("\xc2\x85\xc2\x9b"), "\\u0085\\u009B");
     // Separators and bidirectional controls reorder or break the line.
-    EXPECT_EQ(escape_for_message("a\xe2\x80\xa8" "b\xe2\x80\xae" "c\xe2\x81\xa6" "d\xe2\x80\x8f"),
+    EXPECT_EQ(escape_for_message("a\xe2\x80\xa8"
+                                 "b\xe2\x80\xae"
+                                 "c\xe2\x81\xa6"
+                                 "d\xe2\x80\x8f"),
               "a\\u2028b\\u202Ec\\u2066d\\u200F");
     for (const char* unsafe : {"\n", "\x1b", "\x7f", "\xc2\x85", "\xe2\x80\xa9", "\xe2\x81\xa9"}) {
         EXPECT_TRUE(needs_escaping(unsafe)) << escape_for_message(unsafe);
@@ -44,9 +47,9 @@ TEST(EscapeForMessage, ControlCharactersBecomeEscapes) {
 
 TEST(EscapeForMessage, InvalidUtf8BecomesByteEscapes) {
     EXPECT_EQ(escape_for_message("\xff\xfe"), "\\xFF\\xFE");
-    EXPECT_EQ(escape_for_message("\xc0\xaf"), "\\xC0\\xAF");          // overlong '/'
-    EXPECT_EQ(escape_for_message("\xed\xa0\x80"), "\\xED\\xA0\\x80");  // a UTF-16 surrogate
-    EXPECT_EQ(escape_for_message("ab\xe6\x9d"), "ab\\xE6\\x9D");       // cut short
+    EXPECT_EQ(escape_for_message("\xc0\xaf"), "\\xC0\\xAF");                    // overlong '/'
+    EXPECT_EQ(escape_for_message("\xed\xa0\x80"), "\\xED\\xA0\\x80");           // a UTF-16 surrogate
+    EXPECT_EQ(escape_for_message("ab\xe6\x9d"), "ab\\xE6\\x9D");                // cut short
     EXPECT_EQ(escape_for_message("\xf4\x90\x80\x80"), "\\xF4\\x90\\x80\\x80");  // above U+10FFFF
     EXPECT_TRUE(needs_escaping("ok\xff"));
 }
@@ -82,8 +85,6 @@ TEST(EscapeForMessage, EveryByteStringGivesOnePrintableLine) {
 }
 
 // ---------------------------------------------------------------- stab on a large star
-
-
 
 struct Spoke {
     long long x, y;  // the spoke goes from (0, 0) to (x, y)
