@@ -103,7 +103,7 @@ std::uint64_t parse_unsigned(std::string_view word, std::string_view what, std::
     return value;
 }
 
-double parse_number(std::string_view word, std::string_view what, NumberRange range) {
+double parse_number(std::string_view word, std::string_view what, const NumberRange& range) {
     double value = 0;
     if (std::string message = check_number(word, range, value); !message.empty()) {
         throw UsageError(std::string(what) + ": " + message);

@@ -108,7 +108,7 @@ struct NumberRange {
 // no nan or inf), read correctly rounded exactly as the JSON reader reads
 // the same literal: 1e-400 is 0, 1e400 is refused. Then checked against
 // the range.
-[[nodiscard]] double parse_number(std::string_view word, std::string_view what, NumberRange range = {});
+[[nodiscard]] double parse_number(std::string_view word, std::string_view what, const NumberRange& range = {});
 
 // A coordinate: parse_number over all finite doubles.
 [[nodiscard]] double parse_coordinate(std::string_view word, std::string_view what);
