@@ -94,12 +94,6 @@ std::string numbered(const std::string& path, std::size_t id) {
     return path.substr(0, dot) + "-" + std::to_string(id) + path.substr(dot);
 }
 
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
-    out << text;
-    if (!out.flush()) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
-}
 
 // The counterexample with the reference and the answer side by side, and an
 // inset at each vertex where the answer turns differently (docs/pictures.md).
