@@ -40,6 +40,7 @@
 #include "dcel/io/graph_json.hpp"
 #include "dcel/queries.hpp"
 #include "inputs.hpp"
+#include "json_row.hpp"
 #include "peers/atan2_solver.hpp"
 #include "peers/boost_traversal.hpp"
 #include "peers/cycles.hpp"
@@ -131,7 +132,7 @@ std::vector<Impl> implementations() {
                          return r.count;
                      },
                      // Superlinear, but it finishes on every input here: at most 44 us per
-                     // edge, 132 s on shuffled Delaunay 1e6 (--uncapped run at db440a9).
+                     // edge, 132 s on shuffled Delaunay 1e6 (an --uncapped run).
                      always});
 #ifdef DCEL_BENCH_HAVE_CGAL
     impls.push_back({"cgal",
@@ -347,10 +348,15 @@ void measure_json(const Case& k, const PlanarGraph& g, const Options& o) {
         const double mb_s = row.bytes / 1e6 / row.seconds;
         const double ns = row.seconds * 1e9 / edges;
         if (o.json) {
-            std::printf(
-                "{\"input\": \"%s\", \"impl\": \"%s\", \"edges\": %zu, \"ns_per_edge\": %.1f, "
-                "\"bytes_per_edge\": null, \"mb_per_s\": %.0f, \"text_bytes\": %.0f}\n",
-                k.input.c_str(), row.name, g.edges.size(), ns, mb_s, row.bytes);
+            JsonRow()
+                .text("input", k.input)
+                .text("impl", row.name)
+                .count("edges", g.edges.size())
+                .number("ns_per_edge", ns, 1)
+                .null("bytes_per_edge")
+                .number("mb_per_s", mb_s, 0)
+                .number("text_bytes", row.bytes, 0)
+                .print();
         } else {
             std::printf("%-24s %9zu  %-15s %10.1f %8s   %.0f MB/s of %.1f MB\n", k.input.c_str(), g.edges.size(), row.name,
                         ns, "-", mb_s, row.bytes / 1e6);
@@ -403,10 +409,16 @@ int run(const Options& o) {
             if (impl.name == "dcel") full = ns;
             if (impl.name == "dcel-unchecked") unchecked = ns;
             if (o.json) {
-                std::printf(
-                    "{\"input\": \"%s\", \"impl\": \"%s\", \"edges\": %zu, \"ns_per_edge\": %.1f, "
-                    "\"bytes_per_edge\": %.1f, \"wall_ns_per_edge\": %.1f, \"runs\": %zu, \"cycles\": %zu}\n",
-                    k.input.c_str(), impl.name.c_str(), g.edges.size(), ns, bytes, wall_ns, m.runs, m.cycles);
+                JsonRow()
+                    .text("input", k.input)
+                    .text("impl", impl.name)
+                    .count("edges", g.edges.size())
+                    .number("ns_per_edge", ns, 1)
+                    .number("bytes_per_edge", bytes, 1)
+                    .number("wall_ns_per_edge", wall_ns, 1)
+                    .count("runs", m.runs)
+                    .count("cycles", m.cycles)
+                    .print();
             } else {
                 std::printf("%-24s %9zu  %-15s %10.1f %8.1f %9.2f %9.2f %10.1f\n", k.input.c_str(), g.edges.size(),
                             impl.name.c_str(), ns, bytes, ns / full, ns / unchecked, wall_ns);

@@ -94,7 +94,6 @@ std::string numbered(const std::string& path, std::size_t id) {
     return path.substr(0, dot) + "-" + std::to_string(id) + path.substr(dot);
 }
 
-
 // The counterexample with the reference and the answer side by side, and an
 // inset at each vertex where the answer turns differently (docs/pictures.md).
 std::string svg_of(const DiffOptions& options, const Failure& f) {
@@ -218,13 +217,15 @@ void add_diff_command(CLI::App& app, Action& action) {
                 if (!raw->print_case.empty()) {
                     const std::size_t n = parse_count("--print-case", raw->print_case, 0, std::uint64_t{1} << 40);
                     const std::optional<Case> c = make_case(o.schedule, n);
-                    if (!c) throw UsageError("case " + std::to_string(n) + " has no graph in the allowed coordinate classes");
+                    if (!c)
+                        throw UsageError("case " + std::to_string(n) + " has no graph in the allowed coordinate classes");
                     write_stdout(c->text);
                     return kExitOk;
                 }
                 if (impl->count() == 0) throw UsageError("--impl CMD is required (the program to check)");
                 if (o.impl.find_first_not_of(" \t\n") == std::string::npos) {
-                    throw UsageError("--impl: the command is empty; give the program to check, e.g. --impl 'python3 mine.py'");
+                    throw UsageError(
+                        "--impl: the command is empty; give the program to check, e.g. --impl 'python3 mine.py'");
                 }
             } catch (const UsageError& e) {
                 // The same shape as the errors CLI11 reports for the other commands.

@@ -15,7 +15,8 @@ inline constexpr std::size_t kKindCount = 16;
 
 class Collector {
 public:
-    // False once this kind is full: callers skip building the message.
+    // False once this kind is full, and then the difference is counted as
+    // unlisted: call it once per difference, and skip building the message.
     [[nodiscard]] bool wants(DifferenceKind k);
     void add(DifferenceKind k, std::string message, std::vector<Index> vertices = {});
     [[nodiscard]] Report finish() &&;

@@ -146,120 +146,156 @@ bool follows_reference_reversed(const Dcel& d, const HalfEdgeId* hs, std::size_t
     return true;
 }
 
-}  // namespace
+// The passes of match_cycles, in order; each reads what the earlier ones
+// decided (m.status, claimed, reversal_of).
+class Matcher {
+public:
+    Matcher(const Reference& ref, const AnswerCycles& answer, Collector& out)
+        : ref_(ref), d_(ref.dcel()), answer_(answer), out_(out), count_(answer.cycles->size()) {
+        m_.status.assign(count_, CycleStatus::Invalid);
+        m_.reference_cycle.assign(count_, kNoIndex);
+        m_.first_match.assign(ref.cycle_count(), kNoIndex);
+        claimed_.assign(ref.cycle_count(), 0);
+        reversal_of_.assign(count_, kNoIndex);
+        hs_.begin.reserve(count_ + 1);
+    }
 
-CycleMatch match_cycles(const Reference& ref, const AnswerCycles& answer, Collector& out) {
-    const Dcel& d = ref.dcel();
-    const std::size_t count = answer.cycles->size();
-    CycleMatch m;
-    m.status.assign(count, CycleStatus::Invalid);
-    m.reference_cycle.assign(count, kNoIndex);
-    m.first_match.assign(ref.cycle_count(), kNoIndex);
-    AnswerHalfEdges hs;
-    hs.begin.reserve(count + 1);
+    CycleMatch run() && {
+        match_as_given();
+        match_reversed();
+        report_wrong_next();
+        report_missing();
+        report_extra();
+        return std::move(m_);
+    }
+
+private:
+    const HalfEdgeId* half_edges(std::size_t i) const { return hs_.all.data() + hs_.begin[i]; }
+    std::size_t length(std::size_t i) const { return hs_.begin[i + 1] - hs_.begin[i]; }
 
     // Cycles as they are: the first listing of a reference cycle matches it.
-    for (std::size_t i = 0; i < count; ++i) {
-        if (map_cycle(ref, answer, i, hs, out)) {
-            const HalfEdgeId* h = hs.all.data() + hs.begin.back();
-            const std::size_t n = hs.all.size() - hs.begin.back();
-            const Index r = ref.cycle_of(h[0]);
-            if (n == ref.cycle_length(r) && follows_reference(d, h, n)) {
-                m.reference_cycle[i] = r;
-                if (m.first_match[r] == kNoIndex) {
-                    m.first_match[r] = static_cast<Index>(i);
-                    m.status[i] = CycleStatus::Matched;
+    void match_as_given() {
+        for (std::size_t i = 0; i < count_; ++i) {
+            if (map_cycle(ref_, answer_, i, hs_, out_)) {
+                const HalfEdgeId* h = hs_.all.data() + hs_.begin.back();
+                const std::size_t n = hs_.all.size() - hs_.begin.back();
+                const Index r = ref_.cycle_of(h[0]);
+                if (n == ref_.cycle_length(r) && follows_reference(d_, h, n)) {
+                    m_.reference_cycle[i] = r;
+                    const bool first = m_.first_match[r] == kNoIndex;
+                    if (first) m_.first_match[r] = static_cast<Index>(i);
+                    m_.status[i] = first ? CycleStatus::Matched : CycleStatus::Duplicate;
                 } else {
-                    m.status[i] = CycleStatus::Duplicate;
+                    m_.status[i] = CycleStatus::Unexplained;
                 }
-            } else {
-                m.status[i] = CycleStatus::Unexplained;
             }
+            hs_.begin.push_back(hs_.all.size());
         }
-        hs.begin.push_back(hs.all.size());
     }
 
     // Backwards: a cycle that is not matched as it is may be a missing
     // reference cycle reversed. Only after every direct match is known, so a
     // reversed cycle never takes the place of one listed later.
-    std::vector<char> claimed(ref.cycle_count(), 0);
-    std::vector<Index> reversal_of(count, kNoIndex);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (m.status[i] != CycleStatus::Unexplained && m.status[i] != CycleStatus::Duplicate) continue;
-        const HalfEdgeId* h = hs.all.data() + hs.begin[i];
-        const std::size_t n = hs.begin[i + 1] - hs.begin[i];
-        const Index r = ref.cycle_of(twin(h[0]));
-        if (n != ref.cycle_length(r) || !follows_reference_reversed(d, h, n)) continue;
-        if (m.first_match[r] == kNoIndex && claimed[r] == 0) {
-            claimed[r] = 1;
-            m.status[i] = CycleStatus::Reversed;
-            m.reference_cycle[i] = r;
-            if (out.wants(DifferenceKind::ReversedCycle)) {
-                out.add(DifferenceKind::ReversedCycle,
-                        answer.label(i) + " is the reference cycle " + cycle_text(ref.cycle_vertices(r)) +
-                            " walked backwards (wrong orientation)",
-                        as_vector((*answer.cycles)[i]));
+    void match_reversed() {
+        for (std::size_t i = 0; i < count_; ++i) {
+            if (m_.status[i] != CycleStatus::Unexplained && m_.status[i] != CycleStatus::Duplicate) continue;
+            const HalfEdgeId* h = half_edges(i);
+            const std::size_t n = length(i);
+            const Index r = ref_.cycle_of(twin(h[0]));
+            if (n != ref_.cycle_length(r) || !follows_reference_reversed(d_, h, n)) continue;
+            if (m_.first_match[r] != kNoIndex || claimed_[r] != 0) {
+                reversal_of_[i] = r;
+                continue;
             }
-        } else {
-            reversal_of[i] = r;
+            claimed_[r] = 1;
+            m_.status[i] = CycleStatus::Reversed;
+            m_.reference_cycle[i] = r;
+            if (out_.wants(DifferenceKind::ReversedCycle)) {
+                out_.add(DifferenceKind::ReversedCycle,
+                         answer_.label(i) + " is the reference cycle " + cycle_text(ref_.cycle_vertices(r)) +
+                             " walked backwards (wrong orientation)",
+                         as_vector((*answer_.cycles)[i]));
+            }
         }
     }
 
     // Wrong next: where an unexplained cycle leaves the reference's walk.
     // Each reference half-edge is reported once, at its first such cycle.
-    std::vector<char> reported(d.num_half_edges(), 0);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (m.status[i] != CycleStatus::Unexplained) continue;
-        const HalfEdgeId* h = hs.all.data() + hs.begin[i];
-        const std::size_t n = hs.begin[i + 1] - hs.begin[i];
-        for (std::size_t j = 0; j < n; ++j) {
-            const HalfEdgeId given = h[(j + 1) % n];
-            const HalfEdgeId expected = d.next(h[j]);
-            if (given == expected || reported[h[j].index()] != 0) continue;
-            reported[h[j].index()] = 1;
-            if (!out.wants(DifferenceKind::WrongNext)) continue;
-            const Index u = d.origin(h[j]).index();
-            const Index v = d.target(h[j]).index();
-            const Index x = d.target(given).index();
-            const Index w = d.target(expected).index();
-            out.add(DifferenceKind::WrongNext,
-                    "at " + step(u, v) + " the answer continues to " + step(v, x) + " (in " + answer.label(i) +
-                        "), the reference to " + step(v, w),
-                    {u, v, x, w});
-        }
-    }
-
-    for (Index r = 0; r < ref.cycle_count(); ++r) {
-        if (m.first_match[r] != kNoIndex || claimed[r] != 0 || !out.wants(DifferenceKind::MissingCycle)) continue;
-        std::vector<Index> vs = ref.cycle_vertices(r);
-        std::string message = "the reference cycle " + cycle_text(vs) + " is missing from the answer";
-        out.add(DifferenceKind::MissingCycle, std::move(message), std::move(vs));
-    }
-
-    for (std::size_t i = 0; i < count; ++i) {
-        const CycleStatus s = m.status[i];
-        if (s != CycleStatus::Duplicate && s != CycleStatus::Unexplained) continue;
-        if (!out.wants(DifferenceKind::ExtraCycle)) continue;
-        std::string why;
-        if (s == CycleStatus::Duplicate) {
-            why = " repeats " + answer.label(m.first_match[m.reference_cycle[i]]) + ": the reference has this cycle once";
-        } else if (reversal_of[i] != kNoIndex) {
-            why = " is not a cycle of the reference; walked backwards it is " +
-                  cycle_text(ref.cycle_vertices(reversal_of[i])) + ", which the answer already has";
-        } else {
-            const HalfEdgeId* h = hs.all.data() + hs.begin[i];
-            const std::size_t n = hs.begin[i + 1] - hs.begin[i];
-            if (follows_reference(d, h, n)) {
-                const Index r = ref.cycle_of(h[0]);
-                why = " goes round the reference cycle " + cycle_text(ref.cycle_vertices(r)) + " " +
-                      std::to_string(n / ref.cycle_length(r)) + " times";
-            } else {
-                why = " is not a boundary cycle of the reference";
+    void report_wrong_next() {
+        std::vector<char> reported(d_.num_half_edges(), 0);
+        for (std::size_t i = 0; i < count_; ++i) {
+            if (m_.status[i] != CycleStatus::Unexplained) continue;
+            const HalfEdgeId* h = half_edges(i);
+            const std::size_t n = length(i);
+            for (std::size_t j = 0; j < n; ++j) {
+                const HalfEdgeId given = h[(j + 1) % n];
+                const HalfEdgeId expected = d_.next(h[j]);
+                if (given == expected || reported[h[j].index()] != 0) continue;
+                reported[h[j].index()] = 1;
+                if (!out_.wants(DifferenceKind::WrongNext)) continue;
+                const Index u = d_.origin(h[j]).index();
+                const Index v = d_.target(h[j]).index();
+                const Index x = d_.target(given).index();
+                const Index w = d_.target(expected).index();
+                out_.add(DifferenceKind::WrongNext,
+                         "at " + step(u, v) + " the answer continues to " + step(v, x) + " (in " + answer_.label(i) +
+                             "), the reference to " + step(v, w),
+                         {u, v, x, w});
             }
         }
-        out.add(DifferenceKind::ExtraCycle, answer.label(i) + why, as_vector((*answer.cycles)[i]));
     }
-    return m;
+
+    void report_missing() {
+        for (Index r = 0; r < ref_.cycle_count(); ++r) {
+            if (m_.first_match[r] != kNoIndex || claimed_[r] != 0 || !out_.wants(DifferenceKind::MissingCycle)) continue;
+            std::vector<Index> vs = ref_.cycle_vertices(r);
+            std::string message = "the reference cycle " + cycle_text(vs) + " is missing from the answer";
+            out_.add(DifferenceKind::MissingCycle, std::move(message), std::move(vs));
+        }
+    }
+
+    // Duplicates and unexplained cycles, each with the likeliest reason.
+    void report_extra() {
+        for (std::size_t i = 0; i < count_; ++i) {
+            const CycleStatus s = m_.status[i];
+            if (s != CycleStatus::Duplicate && s != CycleStatus::Unexplained) continue;
+            if (!out_.wants(DifferenceKind::ExtraCycle)) continue;  // counts it as unlisted
+            out_.add(DifferenceKind::ExtraCycle, answer_.label(i) + why_extra(i), as_vector((*answer_.cycles)[i]));
+        }
+    }
+
+    std::string why_extra(std::size_t i) const {
+        if (m_.status[i] == CycleStatus::Duplicate) {
+            return " repeats " + answer_.label(m_.first_match[m_.reference_cycle[i]]) +
+                   ": the reference has this cycle once";
+        }
+        if (reversal_of_[i] != kNoIndex) {
+            return " is not a cycle of the reference; walked backwards it is " +
+                   cycle_text(ref_.cycle_vertices(reversal_of_[i])) + ", which the answer already has";
+        }
+        const HalfEdgeId* h = half_edges(i);
+        const std::size_t n = length(i);
+        if (!follows_reference(d_, h, n)) return " is not a boundary cycle of the reference";
+        const Index r = ref_.cycle_of(h[0]);
+        return " goes round the reference cycle " + cycle_text(ref_.cycle_vertices(r)) + " " +
+               std::to_string(n / ref_.cycle_length(r)) + " times";
+    }
+
+    const Reference& ref_;
+    const Dcel& d_;
+    const AnswerCycles& answer_;
+    Collector& out_;
+    const std::size_t count_;
+    CycleMatch m_;
+    AnswerHalfEdges hs_;
+    std::vector<char> claimed_;       // per reference cycle: taken by a reversed answer cycle
+    std::vector<Index> reversal_of_;  // per answer cycle: the reference cycle it reverses, already listed
+};
+
+}  // namespace
+
+CycleMatch match_cycles(const Reference& ref, const AnswerCycles& answer, Collector& out) {
+    return Matcher(ref, answer, out).run();
 }
 
 }  // namespace dcel::check::detail
