@@ -1,0 +1,60 @@
+// The pieces of the Python extension dcel._dcel, one file per area:
+// inputs.cpp (Python values in: graphs, points, ids), errors.cpp (C++
+// exceptions out as dcel.InvalidInput / dcel.TopologyError),
+// bind_dcel.cpp (the Dcel class: numpy views, queries, edits),
+// bind_check.cpp (check and validate), bind_gen.cpp (the generators).
+// Only public headers of the library are used, as the CLI does.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "dcel/graph.hpp"
+#include "dcel/ids.hpp"
+
+namespace dcel {
+struct Violation;
+}
+
+namespace dcel::python {
+
+namespace py = pybind11;
+
+// A value type or exception class of dcel._types (Graph, Face, Location, ...).
+[[nodiscard]] py::object value_type(const char* name);
+
+// ---- Inputs (inputs.cpp). Every failure is InvalidInput with a message that
+// names the place ("vertices[3]: ...", "edges[2][1]: ...").
+
+// vertices: anything numpy can read as an (n, 2) float64 array (lists of
+// pairs, arrays); edges: an (m, 2) array of integers (integral floats are
+// accepted, as the JSON reader accepts 1.0). Copied once into the graph.
+[[nodiscard]] PlanarGraph graph_from(py::handle vertices, py::handle edges);
+// A graph argument: a Graph (or any pair (vertices, edges)) or a mapping with
+// "vertices" and "edges".
+[[nodiscard]] PlanarGraph graph_from(py::handle graph);
+// A point (x, y); `what` names it in errors ("split_edge: point").
+[[nodiscard]] Point point_from(py::handle p, std::string_view what);
+// An id argument that must be below `count`; `what` is e.g. "split_edge: edge".
+[[nodiscard]] Index id_below(std::int64_t id, std::size_t count, std::string_view what);
+
+// ---- Outputs.
+// Graph(vertices=[(x, y), ...], edges=[(u, v), ...]) of plain Python values.
+[[nodiscard]] py::object graph_to_python(const PlanarGraph& g);
+// [Violation(invariant, message, vertices, half_edges, faces), ...]
+[[nodiscard]] py::list violations_to_python(const std::vector<Violation>& all);
+// An id, or None when null.
+[[nodiscard]] py::object id_or_none(Index id);
+
+// ---- Registration.
+void register_errors(py::module_& m);
+void bind_dcel(py::module_& m);
+void bind_check(py::module_& m);
+void bind_gen(py::module_& m);
+
+}  // namespace dcel::python
