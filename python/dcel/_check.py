@@ -53,7 +53,8 @@ class Report(Sequence[Difference]):
     def __repr__(self) -> str:
         if self.agrees:
             return "<dcel.Report: agrees>"
-        return f"<dcel.Report: {len(self) + self.unlisted} differences, first: {self._differences[0]!r}>"
+        count = len(self) + self.unlisted
+        return f"<dcel.Report: {count} difference{'s' if count != 1 else ''}, first: {self._differences[0]!r}>"
 
 
 def _plain(value: Any) -> Any:
@@ -188,9 +189,8 @@ def check(graph: Any, answer: Any, kind: Optional[str] = None) -> Report:
         message = f"answer: cannot be written as a {kind or 'faces or dump'} document: {why}"
         difference = Difference("unreadable-answer", message, [])
         return Report([difference], 0, f"1 difference\nunreadable-answer: {message}\n", kind or "faces")
-    chosen = kind or ("dump" if _is_dump(answer) else "faces")
-    differences, unlisted, report = _dcel._check_text(reference, text, kind or "auto")
-    return Report(differences, unlisted, report, chosen)
+    differences, unlisted, report, read_as = _dcel._check_text(reference, text, kind or "auto")
+    return Report(differences, unlisted, report, read_as)
 
 
 def validate(dump: Any) -> List[Violation]:

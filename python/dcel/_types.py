@@ -85,6 +85,10 @@ class IdChange(NamedTuple):
     merged_into: Optional[int] = None
     moved: Optional[int] = None
 
+    def __repr__(self) -> str:
+        given = ", ".join(f"{name}={value}" for name, value in zip(self._fields, self) if value is not None)
+        return f"IdChange({given})"
+
     def renamed(self, before: int) -> Optional[int]:
         """The id after the edit of what had id ``before`` (None when it went away)."""
         if self.removed is not None and before == self.removed:
@@ -143,12 +147,13 @@ _NAMED_ID = re.compile(r"\b([vehf])(\d+)\b")
 class TopologyError(ValueError):
     """An edit that would break the planar subdivision (a crossing, a point not
     on the edge, ...). The DCEL is unchanged. ``vertices``, ``edges``,
-    ``half_edges`` and ``faces`` are the ids the message names (v3, e7, h2, f1).
+    ``half_edges`` and ``faces`` are the ids involved: the edit's own
+    arguments first, then those the message names (v3, e7, h2, f1).
     """
 
-    def __init__(self, message: str):
+    def __init__(self, message: str, vertices: Sequence[int] = (), edges: Sequence[int] = ()):
         super().__init__(message)
-        named = {"v": [], "e": [], "h": [], "f": []}
+        named: dict = {"v": list(vertices), "e": list(edges), "h": [], "f": []}
         for prefix, number in _NAMED_ID.findall(message):
             if int(number) not in named[prefix]:
                 named[prefix].append(int(number))

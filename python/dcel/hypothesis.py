@@ -157,6 +157,7 @@ def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None) -> No
     path of an SVG drawing of the reference with the differing cycles in red
     (in $DCEL_SVG_DIR, or dcel-failures/ in the temporary directory).
     """
+    __tracebackhide__ = True  # pytest shows the caller's line, not this function's body
     reference = graph if isinstance(graph, _dcel.Dcel) else _dcel.build(graph)
     report = check(reference, answer, kind=kind)
     if report.agrees:
@@ -166,10 +167,11 @@ def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None) -> No
     answer_json = _answer_json(answer)
     path = _svg_path(graph_json, answer_json)
     highlight = [d.vertices for d in report if d.vertices][:8]
-    title = f"{report[0].kind}: {report[0].message}" if len(report) else "differs"
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(reference.svg(title=title[:200], highlight=highlight))
     count = len(report) + report.unlisted
+    first = report[0].kind if len(report) else "differs"
+    title = f"the reference; red: where the answer differs ({first}, {count} in all)"
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(reference.svg(title=title, highlight=highlight))
     lines = [
         f"the answer differs from the reference ({count} difference{'s' if count != 1 else ''})",
         f"graph ({reference.num_vertices} vertices, {reference.num_edges} edges):",

@@ -3,6 +3,8 @@
 // documents of docs/formats.md and hands them here). The reading is the
 // library's own (io::read_faces_answer, io::read_dump), so a Python answer is
 // read exactly as `dcel check` reads the same answer from a file.
+#include <utility>
+
 #include "binding.hpp"
 #include "dcel/check/compare.hpp"
 #include "dcel/check/report.hpp"
@@ -21,15 +23,18 @@ py::list ids(const std::vector<Id>& v) {
     return out;
 }
 
-check::Report compare_text(const Dcel& reference, const std::string& text, const std::string& kind) {
+// The report, and the kind the answer was read as (kind, or for "auto" what
+// io::read_answer found: a dump when the text has "half_edges").
+std::pair<check::Report, std::string> compare_text(const Dcel& reference, const std::string& text, std::string kind) {
     try {
-        if (kind == "faces") return check::compare_faces(reference, io::read_faces_answer(text));
-        if (kind == "dump") return check::compare_dump(reference, io::read_dump(text));
+        if (kind == "faces") return {check::compare_faces(reference, io::read_faces_answer(text)), kind};
+        if (kind == "dump") return {check::compare_dump(reference, io::read_dump(text)), kind};
         auto parsed = io::read_answer(text);
-        if (auto* faces = std::get_if<check::FacesAnswer>(&parsed)) return check::compare_faces(reference, *faces);
-        return check::compare_dump(reference, std::get<DcelDump>(parsed));
+        if (auto* faces = std::get_if<check::FacesAnswer>(&parsed))
+            return {check::compare_faces(reference, *faces), "faces"};
+        return {check::compare_dump(reference, std::get<DcelDump>(parsed)), "dump"};
     } catch (const InvalidInput& e) {
-        return check::unreadable_answer(std::string("answer: ") + e.what());
+        return {check::unreadable_answer(std::string("answer: ") + e.what()), kind == "auto" ? "faces" : kind};
     }
 }
 
@@ -51,11 +56,12 @@ void bind_check(py::module_& m) {
             if (kind != "faces" && kind != "dump" && kind != "auto") {
                 throw InvalidInput(InputErrorKind::Shape, "check: unknown kind \"" + kind + "\"");
             }
-            check::Report report;
+            std::pair<check::Report, std::string> result;
             {
                 const py::gil_scoped_release unlocked;
-                report = compare_text(reference.get(), text, kind);
+                result = compare_text(reference.get(), text, kind);
             }
+            const check::Report& report = result.first;
             const py::object type = value_type("Difference");
             py::list differences;
             for (const check::Difference& d : report.differences) {
@@ -63,10 +69,10 @@ void bind_check(py::module_& m) {
                 for (const Index v : d.vertices) vertices.append(v);
                 differences.append(type(std::string(check::kind_name(d.kind)), d.message, vertices));
             }
-            return py::make_tuple(differences, report.unlisted, check::report_text(report));
+            return py::make_tuple(differences, report.unlisted, check::report_text(report), result.second);
         },
         py::arg("reference"), py::arg("text"), py::arg("kind"),
-        "(differences, unlisted, report text) of an answer given as JSON text of the given kind "
+        "(differences, unlisted, report text, kind read) of an answer given as JSON text of the given kind "
         "(\"faces\", \"dump\", or \"auto\": a dump when it has \"half_edges\").");
     m.def(
         "_validate_text",

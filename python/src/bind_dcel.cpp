@@ -84,6 +84,16 @@ py::object change(const Change& c) {
     return value_type("Change")(id_change(c.vertices), id_change(c.edges), id_change(c.faces));
 }
 
+// Runs an edit; a refusal carries the edit's vertex and edge arguments.
+template <class Edit>
+py::object edited(Edit edit, std::vector<Index> vertices, std::vector<Index> edges = {}) {
+    try {
+        return change(edit());
+    } catch (const TopologyError& e) {
+        throw EditRefused{e.what(), std::move(vertices), std::move(edges)};
+    }
+}
+
 // Graph(vertices, edges) of numpy arrays: (V, 2) float64 and (E, 2) uint32.
 py::object graph_as_arrays(const PlanarGraph& g) {
     py::array_t<double> vertices({static_cast<py::ssize_t>(g.vertices.size()), py::ssize_t{2}});
@@ -137,6 +147,7 @@ never changes: an edit made while views exist works on a copy.)doc";
 
 void bind_dcel(py::module_& m) {
     py::class_<DcelObject> cls(m, "Dcel", kDcelDoc);
+    cls.attr("__module__") = "dcel";  // shown as dcel.Dcel
     cls.def_property_readonly("num_vertices", [](const DcelObject& s) { return s.get().num_vertices(); })
         .def_property_readonly("num_edges", [](const DcelObject& s) { return s.get().num_edges(); })
         .def_property_readonly("num_half_edges", [](const DcelObject& s) { return s.get().num_half_edges(); })
@@ -301,7 +312,7 @@ void bind_dcel(py::module_& m) {
             [](DcelObject& s, std::int64_t e, const py::object& p) {
                 const EdgeId id = edge_arg(s.get(), e, "split_edge: edge");
                 const Point at = point_from(p, "split_edge: point");
-                return change(split_edge(s.for_edit(), id, at));
+                return edited([&] { return split_edge(s.for_edit(), id, at); }, {}, {id.index()});
             },
             py::arg("e"), py::arg("point"),
             "Splits edge e at point (exactly on e, strictly inside). The new vertex is V, the new edge E. Returns a Change.")
@@ -310,7 +321,7 @@ void bind_dcel(py::module_& m) {
             [](DcelObject& s, std::int64_t u, std::int64_t v) {
                 const VertexId a = vertex_arg(s.get(), u, "add_edge: vertex");
                 const VertexId b = vertex_arg(s.get(), v, "add_edge: vertex");
-                return change(add_edge(s.for_edit(), a, b));
+                return edited([&] { return add_edge(s.for_edit(), a, b); }, {a.index(), b.index()});
             },
             py::arg("u"), py::arg("v"),
             "Adds the edge u-v (id E, half-edge 2E runs u -> v), splitting or joining faces. TopologyError when it\n"
@@ -320,35 +331,35 @@ void bind_dcel(py::module_& m) {
             [](DcelObject& s, std::int64_t u, const py::object& p) {
                 const VertexId a = vertex_arg(s.get(), u, "add_edge_to_point: vertex");
                 const Point at = point_from(p, "add_edge_to_point: point");
-                return change(add_edge_to_point(s.for_edit(), a, at));
+                return edited([&] { return add_edge_to_point(s.for_edit(), a, at); }, {a.index()});
             },
             py::arg("u"), py::arg("point"), "Adds a vertex at point and the edge from u to it. Returns a Change.")
         .def(
             "add_vertex",
             [](DcelObject& s, const py::object& p) {
                 const Point at = point_from(p, "add_vertex: point");
-                return change(add_vertex(s.for_edit(), at));
+                return edited([&] { return add_vertex(s.for_edit(), at); }, {});
             },
             py::arg("point"), "Adds an isolated vertex at point, listed in the face containing it. Returns a Change.")
         .def(
             "remove_edge",
             [](DcelObject& s, std::int64_t e) {
                 const EdgeId id = edge_arg(s.get(), e, "remove_edge: edge");
-                return change(remove_edge(s.for_edit(), id));
+                return edited([&] { return remove_edge(s.for_edit(), id); }, {}, {id.index()});
             },
             py::arg("e"), "Removes edge e; the last edge moves into its id. Returns a Change.")
         .def(
             "remove_isolated_vertex",
             [](DcelObject& s, std::int64_t v) {
                 const VertexId id = vertex_arg(s.get(), v, "remove_isolated_vertex: vertex");
-                return change(remove_isolated_vertex(s.for_edit(), id));
+                return edited([&] { return remove_isolated_vertex(s.for_edit(), id); }, {id.index()});
             },
             py::arg("v"), "Removes v, which has no edges; the last vertex moves into its id. Returns a Change.")
         .def(
             "merge_collinear_edges",
             [](DcelObject& s, std::int64_t v) {
                 const VertexId id = vertex_arg(s.get(), v, "merge_collinear_edges: vertex");
-                return change(merge_collinear_edges(s.for_edit(), id));
+                return edited([&] { return merge_collinear_edges(s.for_edit(), id); }, {id.index()});
             },
             py::arg("v"),
             "Removes v, which has exactly two edges a-v-b with v strictly inside a-b: the inverse of split_edge.")

@@ -51,6 +51,14 @@ namespace py = pybind11;
 // An id, or None when null.
 [[nodiscard]] py::object id_or_none(Index id);
 
+// A refused edit (TopologyError from the library) with the edit's own
+// arguments, which the Python TopologyError carries as its ids.
+struct EditRefused {
+    std::string message;
+    std::vector<Index> vertices;
+    std::vector<Index> edges;
+};
+
 // ---- Registration.
 void register_errors(py::module_& m);
 void bind_dcel(py::module_& m);

@@ -1,6 +1,8 @@
 // The library's exceptions as Python exceptions of dcel._types:
 // InvalidInput (a ValueError with kind, vertices and edges) and TopologyError
 // (a ValueError naming the ids its message names).
+#include <pybind11/stl.h>
+
 #include "binding.hpp"
 #include "dcel/error.hpp"
 
@@ -28,6 +30,9 @@ void register_errors(py::module_& /*m*/) {
         } catch (const TopologyError& e) {
             const py::object cls = value_type("TopologyError");
             raise(cls, cls(e.what()));
+        } catch (const EditRefused& e) {
+            const py::object cls = value_type("TopologyError");
+            raise(cls, cls(e.message, py::cast(e.vertices), py::cast(e.edges)));
         }
     });
 }

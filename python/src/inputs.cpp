@@ -1,7 +1,9 @@
-// Python values in: graphs, points and ids. numpy does the reading (lists,
-// tuples and arrays of any numeric dtype alike); what numpy accepts but a
-// graph must not have (fractional or negative indexes, the wrong shape) is
-// refused here with the place named, in the JSON reader's words.
+// Python values in: graphs, points and ids. Lists and tuples of pairs are
+// read here, element by element (numpy's reading of nested lists costs about
+// 1 s per 4e6 pairs, several times this); anything else (arrays of any
+// numeric dtype, sequences of arrays) is read by numpy. What numpy accepts
+// but a graph must not have (fractional or negative indexes, the wrong
+// shape) is refused with the place named, in the JSON reader's words.
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -43,13 +45,7 @@ py::array as_array(py::handle value, const char* dtype, std::string_view what) {
 
 bool empty(const py::array& a) { return a.size() == 0; }
 
-// Lists and tuples of pairs are read here, element by element: numpy's own
-// reading of nested lists costs about 1 s per 4e6 pairs, several times this.
-// nullopt sends anything else (arrays, rows that are not lists or tuples of
-// two) to numpy.
 bool is_list_or_tuple(PyObject* o) { return PyList_Check(o) || PyTuple_Check(o); }
-
-PyObject* pair_at(PyObject* seq, Py_ssize_t i) { return PySequence_Fast_GET_ITEM(seq, i); }
 
 std::string repr_of(PyObject* o) {
     std::string s = py::repr(py::handle(o)).cast<std::string>();
@@ -72,6 +68,7 @@ bool all_pairs(PyObject* seq, const char* what, const char* expected) {
     return true;
 }
 
+// The points of a list or tuple of pairs; nullopt for anything else (numpy reads it).
 std::optional<std::vector<Point>> points_from_pairs(py::handle vertices) {
     PyObject* seq = vertices.ptr();
     if (!is_list_or_tuple(seq)) return std::nullopt;
@@ -81,7 +78,7 @@ std::optional<std::vector<Point>> points_from_pairs(py::handle vertices) {
         fail(InputErrorKind::TooLarge, "vertices: more points than 32-bit ids can name");
     std::vector<Point> out(static_cast<std::size_t>(n));
     for (Py_ssize_t i = 0; i < n; ++i) {
-        PyObject* pair = pair_at(seq, i);
+        PyObject* pair = PySequence_Fast_GET_ITEM(seq, i);
         double xy[2];
         for (int c = 0; c < 2; ++c) {
             PyObject* value = PySequence_Fast_GET_ITEM(pair, c);
@@ -190,6 +187,7 @@ Index index_of(PyObject* value, std::size_t k, int side) {
     return static_cast<Index>(v);
 }
 
+// The edges of a list or tuple of pairs; nullopt for anything else (numpy reads it).
 std::optional<std::vector<GraphEdge>> edges_from_pairs(py::handle edges) {
     PyObject* seq = edges.ptr();
     if (!is_list_or_tuple(seq)) return std::nullopt;
@@ -199,7 +197,7 @@ std::optional<std::vector<GraphEdge>> edges_from_pairs(py::handle edges) {
         fail(InputErrorKind::TooLarge, "edges: more edges than 32-bit half-edge ids can name");
     std::vector<GraphEdge> out(static_cast<std::size_t>(m));
     for (Py_ssize_t k = 0; k < m; ++k) {
-        PyObject* pair = pair_at(seq, k);
+        PyObject* pair = PySequence_Fast_GET_ITEM(seq, k);
         const auto kk = static_cast<std::size_t>(k);
         out[kk] = {VertexId(index_of(PySequence_Fast_GET_ITEM(pair, 0), kk, 0)),
                    VertexId(index_of(PySequence_Fast_GET_ITEM(pair, 1), kk, 1))};
