@@ -71,7 +71,7 @@ def _null(v: Any) -> Any:
         return None
     try:
         i = int(v)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         return v  # left for the reader to refuse, with its place
     return None if i in (-1, NULL) and i == v else v
 
@@ -182,7 +182,7 @@ def check(graph: Any, answer: Any, kind: Optional[str] = None) -> Report:
     reference = _reference(graph)
     try:
         text = answer_text(answer, kind)
-    except (TypeError, ValueError, KeyError) as e:
+    except (TypeError, ValueError, KeyError, OverflowError) as e:
         text = None
         why = f"{type(e).__name__}: {e}"
     if text is None:

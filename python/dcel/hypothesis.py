@@ -97,14 +97,17 @@ def _graphs(draw: Any, families: Sequence[str], min_vertices: int, max_vertices:
     keep = [draw(st.integers(0, _KEEP_RANGE)) != 0 for _ in g.vertices]
     g = _subgraph(g, keep, [draw(st.integers(0, _KEEP_RANGE)) != 0 for _ in g.edges])
     if coordinates == "integers":
-        g = _as_integers(g)
-        assume(g is not None)
+        scaled = _as_integers(g)
+        assume(scaled is not None)
+        assert scaled is not None
+        return scaled
     return g
 
 
 def _subgraph(g: Graph, keep_vertex: Sequence[bool], keep_edge: Sequence[bool]) -> Graph:
     """The vertices and edges kept, renumbered in order (an edge goes with either end)."""
-    new_id, vertices = {}, []
+    new_id: dict = {}
+    vertices: list = []
     for v, (p, kept) in enumerate(zip(g.vertices, keep_vertex)):
         if kept:
             new_id[v] = len(vertices)
@@ -162,8 +165,7 @@ def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None) -> No
     report = check(reference, answer, kind=kind)
     if report.agrees:
         return
-    g = reference.graph()
-    graph_json = Graph(g.vertices.tolist(), g.edges.tolist()).to_json()
+    graph_json = reference.graph().to_json()
     answer_json = _answer_json(answer)
     path = _svg_path(graph_json, answer_json)
     highlight = [d.vertices for d in report if d.vertices][:8]

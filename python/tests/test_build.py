@@ -4,6 +4,8 @@ import gc
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import dcel
 
@@ -131,3 +133,35 @@ def test_ids_out_of_range_are_refused_before_the_library_sees_them():
         assert caught.value.kind == "bad-index" and "does not exist" in str(caught.value)
     with pytest.raises(dcel.InvalidInput, match="finite"):
         d.locate((float("inf"), 0))
+
+
+JUNK = st.recursive(
+    st.none() | st.booleans() | st.integers(-(2**70), 2**70) | st.floats() | st.text(max_size=3),
+    lambda inner: st.lists(inner, max_size=4) | st.tuples(inner, inner),
+    max_leaves=12,
+)
+
+
+@settings(max_examples=400)
+@given(JUNK, JUNK)
+def test_junk_input_is_refused_cleanly(vertices, edges):
+    """Whatever Python hands it, build() returns a Dcel or raises InvalidInput (one line)."""
+    try:
+        d = dcel.build(vertices, edges)
+    except dcel.InvalidInput as e:
+        assert str(e) and "\n" not in str(e)
+    else:
+        assert d.validate() == []
+
+
+@settings(max_examples=200)
+@given(st.lists(st.tuples(st.integers(-3, 3), st.integers(-3, 3)), max_size=8, unique=True),
+       st.lists(st.tuples(st.integers(-2, 9), st.integers(-2, 9)), max_size=8))
+def test_small_graphs_build_or_are_refused_with_their_ids(vertices, edges):
+    try:
+        d = dcel.build(vertices, edges)
+    except dcel.InvalidInput as e:
+        assert e.vertices or e.edges, str(e)
+        assert all(0 <= v < len(vertices) for v in e.vertices) and all(0 <= k < len(edges) for k in e.edges)
+    else:
+        assert d.validate() == [] and d.num_edges == len(edges)

@@ -5,6 +5,8 @@ import json
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 import dcel
 
@@ -169,3 +171,41 @@ def test_the_report_is_a_sequence_with_the_cli_text():
     assert report.unlisted == 0 and "1 difference" in repr(report)
     huge = dcel.check(TRIANGLE, [[0, 1, 2], [1, 0, 2]] + [[0, 1, 2]] * 150)
     assert len(huge) == 100 and huge.unlisted > 0 and "more not listed" in huge.text
+
+
+JUNK = st.recursive(
+    st.none() | st.booleans() | st.integers(-(2**70), 2**70) | st.floats() | st.text(max_size=3),
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.sampled_from(
+        ["faces", "vertices", "half_edges", "origin", "twin", "next", "prev", "face", "outer", "inner", "isolated"]),
+        inner, max_size=4),
+    max_leaves=16,
+)
+
+
+@settings(max_examples=400)
+@given(JUNK, st.sampled_from([None, "faces", "dump"]))
+def test_junk_answers_are_differences_not_crashes(answer, kind):
+    """check() of anything gives a Report; a malformed answer is an unreadable-answer difference."""
+    report = dcel.check(NESTED, answer, kind=kind)
+    assert report.agrees or len(report) > 0
+    for d in report:
+        assert d.message and "\n" not in d.message
+
+
+@settings(max_examples=300)
+@given(st.data())
+def test_random_corruptions_of_a_dump_are_never_accepted(data):
+    """Change one id of a valid dump to another value: validate() reports it, or it is still the reference DCEL
+    (e.g. another half-edge of the same cycle as a face's outer), in which case check() agrees too."""
+    dump = dcel.build(*NESTED).to_dump()
+    h = data.draw(st.integers(0, len(dump["half_edges"]) - 1))
+    field = data.draw(st.sampled_from(["origin", "twin", "next", "prev", "face"]))
+    value = data.draw(st.integers(0, 20))
+    original = dump["half_edges"][h][field]
+    dump["half_edges"][h][field] = value
+    violations = dcel.validate(dump)
+    report = dcel.check(NESTED, dump)
+    if value == original:
+        assert violations == [] and report.agrees
+    else:
+        assert violations and not report.agrees, (h, field, value)
