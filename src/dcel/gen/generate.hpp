@@ -40,7 +40,7 @@ enum class Family : std::uint8_t {
 struct Params {
     Family family = Family::RandomSegments;
     std::uint64_t seed = 0;
-    std::size_t vertices = 16;  // target size; a family may produce somewhat fewer
+    std::size_t vertices = 16;  // every family gives exactly this many vertices
 };
 
 // A valid planar straight-line graph: build() accepts it. Deterministic.
