@@ -1,7 +1,7 @@
 """pure_dcel.py checked against the reference with pytest and Hypothesis
 (docs/python.md). Run from the repository root:
 
-    .venv/bin/python -m pytest examples/python/test_pure_dcel.py
+    python3 -m pytest examples/python/test_pure_dcel.py
 """
 from hypothesis import given
 

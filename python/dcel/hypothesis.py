@@ -66,10 +66,11 @@ def planar_graphs(
     """Valid planar straight-line graphs, as Graph(vertices, edges) of lists.
 
     families: names from dcel.families() (default: all of them, or all but
-    "near-degenerate" when coordinates="integers"). max_vertices,
-    min_vertices: the size asked of the generator (a family may make a few
-    fewer, and dropping shrinks further). coordinates: "any" or "integers"
-    (see COORDINATES). Every graph is one that dcel.build() accepts.
+    "near-degenerate" when coordinates="integers"). min_vertices,
+    max_vertices: the range of the size asked of the generator, which makes
+    exactly that many vertices; about one vertex and one edge in 16 is then
+    dropped. coordinates: "any" or "integers" (see COORDINATES). Every graph
+    is one that dcel.build() accepts.
     """
     known = _dcel.families()
     if coordinates not in COORDINATES:

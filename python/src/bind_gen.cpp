@@ -58,7 +58,7 @@ void bind_gen(py::module_& m) {
         },
         py::arg("family"), py::arg("seed"), py::arg("vertices") = 16,
         "A random valid graph (a Graph of lists) from the library's generators, as `dcel gen` makes it: the same\n"
-        "family, seed and size give the same graph everywhere. A family may make somewhat fewer vertices.");
+        "family, seed and size give the same graph everywhere, with exactly that many vertices.");
     m.def(
         "shrink_candidates",
         [](const py::object& graph) {

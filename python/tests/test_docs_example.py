@@ -38,6 +38,24 @@ def test_the_sessions_on_the_page_run():
     assert result.attempted > 10 and result.failed == 0
 
 
+def test_the_transcripts_on_the_page_print_what_they_show(tmp_path):
+    """The page's console transcripts are marked skip for docs.examples (they need the module installed);
+    here they run as scripts/check-docs runs transcripts, with this build's module as the installed one."""
+    from conftest import cli_path
+
+    text = open(DOCS, encoding="utf-8").read()
+    unskipped = re.sub(r"<!-- docs-test: skip needs the module installed[^>]*-->\n", "", text)
+    assert unskipped != text
+    page = tmp_path / "python.md"
+    page.write_text(unskipped, encoding="utf-8")
+    env = {k: v for k, v in os.environ.items() if k != "DCEL_SVG_DIR"}  # the page shows the default folder
+    env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")  # python3: this interpreter
+    done = subprocess.run([sys.executable, os.path.join(SOURCE_DIR, "scripts", "check-docs"), "--dcel", cli_path(),
+                           str(page)], env=env, capture_output=True, text=True, timeout=900)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert re.search(r"[1-9]\d* commands run", done.stdout), done.stdout
+
+
 def test_the_example_passes():
     done = run_example()
     assert done.returncode == 0, done.stdout + done.stderr

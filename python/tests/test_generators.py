@@ -19,6 +19,7 @@ def test_generate_is_dcel_gen():
             cli = json.loads(run_cli("gen", "--family", family, "--seed", str(seed), "--vertices", "20"))
             assert [list(p) for p in g.vertices] == cli["vertices"] and [list(e) for e in g.edges] == cli["edges"]
             assert dcel.generate(family, seed, 20) == g  # deterministic
+            assert len(g.vertices) == 20
             dcel.build(g)  # valid
 
 
@@ -92,7 +93,7 @@ def test_planted_defects_are_refused():
 @given(planar_graphs(max_vertices=25))
 def test_planar_graphs_are_valid_and_small(graph):
     d = dcel.build(graph)
-    assert len(graph.vertices) <= 25 + 4  # a family may round its shape up a little
+    assert len(graph.vertices) <= 25
     assert isinstance(graph.vertices, list) and all(isinstance(p, tuple) for p in graph.vertices)
     assert d.validate() == []
 
