@@ -16,13 +16,6 @@
 namespace dcel::python {
 namespace {
 
-template <class Id>
-py::list ids(const std::vector<Id>& v) {
-    py::list out(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i].index();
-    return out;
-}
-
 // The report, and the kind the answer was read as (kind, or for "auto" what
 // io::read_answer found: a dump when the text has "half_edges").
 std::pair<check::Report, std::string> compare_text(const Dcel& reference, const std::string& text, std::string kind) {
@@ -44,7 +37,8 @@ py::list violations_to_python(const std::vector<Violation>& all) {
     const py::object type = value_type("Violation");
     py::list out;
     for (const Violation& v : all) {
-        out.append(type(to_string(v.invariant), v.message, ids(v.vertices), ids(v.half_edges), ids(v.faces)));
+        out.append(type(to_string(v.invariant), v.message, ids_to_python(v.vertices), ids_to_python(v.half_edges),
+                        ids_to_python(v.faces)));
     }
     return out;
 }

@@ -1,6 +1,7 @@
 // dcel.Dcel (the class DcelObject, dcel_object.hpp): numpy views, walks,
 // queries, point location, stabbing and edits; and build() and faces().
 #include <cmath>
+#include <cstring>
 #include <ctime>
 #include <memory>
 
@@ -38,15 +39,9 @@ py::array computed(std::size_t n, Fill fill) {
     return a;
 }
 
-template <class Id>
-py::list ids(const std::vector<Id>& v) {
-    py::list out(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i].index();
-    return out;
-}
-
 py::object face_record(const Dcel& d, FaceId f) {
-    return value_type("Face")(f.index(), id_or_none(d.outer(f).index()), ids(d.inner(f)), ids(d.isolated(f)));
+    return value_type("Face")(f.index(), id_or_none(d.outer(f).index()), ids_to_python(d.inner(f)),
+                              ids_to_python(d.isolated(f)));
 }
 
 py::object area(const Area& a) { return value_type("Area")(a.value, to_int(a.sign)); }
@@ -97,7 +92,7 @@ py::object edited(Edit edit, std::vector<Index> vertices, std::vector<Index> edg
 // Graph(vertices, edges) of numpy arrays: (V, 2) float64 and (E, 2) uint32.
 py::object graph_as_arrays(const PlanarGraph& g) {
     py::array_t<double> vertices({static_cast<py::ssize_t>(g.vertices.size()), py::ssize_t{2}});
-    if (!g.vertices.empty()) std::copy_n(&g.vertices.data()->x, 2 * g.vertices.size(), vertices.mutable_data());
+    if (!g.vertices.empty()) std::memcpy(vertices.mutable_data(), g.vertices.data(), g.vertices.size() * sizeof(Point));
     py::array_t<std::uint32_t> edges({static_cast<py::ssize_t>(g.edges.size()), py::ssize_t{2}});
     std::uint32_t* out = edges.mutable_data();
     for (const GraphEdge& e : g.edges) {
@@ -109,7 +104,7 @@ py::object graph_as_arrays(const PlanarGraph& g) {
 
 py::list cycles_to_python(const std::vector<std::vector<VertexId>>& cycles) {
     py::list out(cycles.size());
-    for (std::size_t i = 0; i < cycles.size(); ++i) out[i] = ids(cycles[i]);
+    for (std::size_t i = 0; i < cycles.size(); ++i) out[i] = ids_to_python(cycles[i]);
     return out;
 }
 
@@ -254,13 +249,13 @@ void bind_dcel(py::module_& m) {
         .def(
             "neighbours",
             [](const DcelObject& s, std::int64_t f) {
-                return ids(neighbours(s.get(), face_arg(s.get(), f, "neighbours: face")));
+                return ids_to_python(neighbours(s.get(), face_arg(s.get(), f, "neighbours: face")));
             },
             py::arg("f"), "The faces across the edges of f's cycles, each once, sorted, f itself excluded.")
         .def(
             "faces_around",
             [](const DcelObject& s, std::int64_t v) {
-                return ids(faces_around(s.get(), vertex_arg(s.get(), v, "faces_around: vertex")));
+                return ids_to_python(faces_around(s.get(), vertex_arg(s.get(), v, "faces_around: vertex")));
             },
             py::arg("v"),
             "The faces met walking counterclockwise around v (one per wedge); for an isolated vertex, its face.")

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -24,6 +25,9 @@ struct Violation;
 namespace dcel::python {
 
 namespace py = pybind11;
+
+// Points are copied and viewed as (n, 2) float64 arrays: x then y, nothing else.
+static_assert(sizeof(Point) == 2 * sizeof(double) && std::is_standard_layout_v<Point>);
 
 // A value type or exception class of dcel._types (Graph, Face, Location, ...).
 [[nodiscard]] py::object value_type(const char* name);
@@ -46,6 +50,13 @@ namespace py = pybind11;
 // ---- Outputs.
 // Graph(vertices=[(x, y), ...], edges=[(u, v), ...]) of plain Python values.
 [[nodiscard]] py::object graph_to_python(const PlanarGraph& g);
+// [id, ...] of typed ids.
+template <class Id>
+[[nodiscard]] py::list ids_to_python(const std::vector<Id>& v) {
+    py::list out(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) out[i] = v[i].index();
+    return out;
+}
 // [Violation(invariant, message, vertices, half_edges, faces), ...]
 [[nodiscard]] py::list violations_to_python(const std::vector<Violation>& all);
 // An id, or None when null.

@@ -105,7 +105,6 @@ std::vector<Point> points_from(py::handle vertices) {
     if (static_cast<std::uint64_t>(a.shape(0)) > kMaxIndex) {
         fail(InputErrorKind::TooLarge, "vertices: more points than 32-bit ids can name");
     }
-    static_assert(sizeof(Point) == 2 * sizeof(double) && std::is_standard_layout_v<Point>);
     std::vector<Point> out(static_cast<std::size_t>(a.shape(0)));
     std::memcpy(out.data(), a.data(), out.size() * sizeof(Point));  // C-contiguous float64 pairs
     return out;
