@@ -185,7 +185,9 @@ def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None) -> No
         "  " + _shorten(answer_json),
         "differences:",
     ]
-    lines += ["  " + line for line in report.text.splitlines()[1:]]
+    lines += [f"  {d.kind}: {d.message}" for d in report]
+    if report.unlisted:
+        lines.append(f"  ... and {report.unlisted} more not listed")
     lines.append(f"drawn in {path}")
     raise AssertionError("\n".join(lines))
 
