@@ -634,6 +634,16 @@ std::uint64_t JsonReader::finish_array() {
     return last_closed_count_;
 }
 
+std::string JsonReader::read_string(std::string_view expected) {
+    if (peek() != JsonType::String) fail_type(expected);
+    bool escaped = false;
+    const std::size_t end = scan_string(escaped);
+    const std::string_view raw = text_.substr(pos_ + 1, end - pos_ - 2);
+    std::string value = escaped ? unescape(raw) : std::string(raw);
+    pos_ = end;
+    return value;
+}
+
 void JsonReader::skip_value() {
     const std::size_t base = depth_;
     for (;;) {

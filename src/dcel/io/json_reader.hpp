@@ -137,6 +137,8 @@ public:
     [[nodiscard]] Index read_index(std::string_view noun);
     // As read_index, but null reads as kNoIndex.
     [[nodiscard]] Index read_index_or_null(std::string_view noun);
+    // A string, unescaped (Shape error when the value has another type).
+    [[nodiscard]] std::string read_string(std::string_view expected = "a string");
 
     // ---- Locations and errors
     // The JSON path of the current value ("edges[3][1]", "half_edges[7].next");
