@@ -15,8 +15,9 @@ from typing import Any, Iterator, List, Optional, Sequence, Union, overload
 from . import _dcel
 from ._types import NULL, Difference, Violation
 
-# The kinds check() knows; "auto" tells a dump (it has "half_edges") from faces.
-KINDS = ("faces", "dump")
+# The answer kinds check() knows (docs/checking.md, "Answer kinds"); with no
+# kind, the library detects it from the answer's shape.
+KINDS = ("faces", "dump", "polygons", "rings")
 
 
 class Report(Sequence[Difference]):
@@ -24,14 +25,19 @@ class Report(Sequence[Difference]):
 
     A sequence of Difference(kind, message, vertices); ``agrees`` is True when
     there is none. ``unlisted`` counts differences beyond the cap of 100 per
-    kind; ``text`` is what `dcel check` prints.
+    kind; ``kind`` is the answer kind it was read as; ``notes`` say what was
+    assumed (a detected kind, rings read as closed) and which convention
+    would make a disagreeing answer agree; ``text`` is what `dcel check`
+    prints, notes included.
     """
 
-    def __init__(self, differences: List[Difference], unlisted: int, text: str, kind: str):
+    def __init__(self, differences: List[Difference], unlisted: int, text: str, kind: str,
+                 notes: Optional[List[str]] = None):
         self._differences = differences
         self.unlisted = unlisted
         self.text = text
         self.kind = kind
+        self.notes = list(notes or [])
 
     @property
     def agrees(self) -> bool:
@@ -129,37 +135,47 @@ def _dump_document(answer: Any) -> dict:
     return dump
 
 
-def _faces_document(answer: Any) -> Any:
-    if isinstance(answer, Mapping):
-        return {"faces": answer.get("faces")}
-    return {"faces": answer}
-
-
 def _is_dump(answer: Any) -> bool:
     return isinstance(answer, _dcel.Dcel) or (
         isinstance(answer, Mapping) and ("half_edges" in answer or "origin" in answer)
     )
 
 
+def _document(answer: Any, kind: Optional[str]) -> Any:
+    """The JSON value `dcel check` would read: a dump as a whole DCEL; a
+    mapping (or GeoJSON, or an object with __geo_interface__ such as a
+    shapely geometry) as it is; a bare list under the kind's key when the
+    kind is given, else as it is (its shape tells the kind)."""
+    if kind == "dump" or (kind is None and _is_dump(answer)):
+        return _dump_document(answer)
+    geo = getattr(answer, "__geo_interface__", None)
+    if geo is not None:
+        return geo
+    if isinstance(answer, Mapping):
+        return dict(answer)
+    if kind is not None:
+        return {kind: answer}
+    return answer
+
+
 def answer_text(answer: Any, kind: Optional[str] = None) -> str:
     """The JSON document `dcel check` would read for this answer."""
     if isinstance(answer, (str, bytes)):
         return answer.decode() if isinstance(answer, bytes) else answer
-    if kind is None:
-        kind = "dump" if _is_dump(answer) else "faces"
-    document = _dump_document(answer) if kind == "dump" else _faces_document(answer)
-    return json.dumps(document, default=_plain, allow_nan=True)
+    return json.dumps(_document(answer, kind), default=_plain, allow_nan=True)
 
 
 def _reference(graph: Any) -> "_dcel.Dcel":
     return graph if isinstance(graph, _dcel.Dcel) else _dcel.build(graph)
 
 
-def check(graph: Any, answer: Any, kind: Optional[str] = None) -> Report:
+def check(graph: Any, answer: Any, kind: Optional[str] = None, *, face_on_right: bool = False,
+          one_based: bool = False, unoriented: bool = False) -> Report:
     """Compare another implementation's answer for ``graph`` with the reference.
 
     graph: a Graph, a pair (vertices, edges), a mapping with "vertices" and
-    "edges", or a Dcel (taken as the reference). answer, by kind:
+    "edges", or a Dcel (taken as the reference). answer, by kind
+    (docs/checking.md, "Answer kinds", says what each is compared with):
 
     - "faces": every boundary cycle as vertex ids in next order, a list of
       lists (or {"faces": [...]}); cycle order and rotation do not matter,
@@ -170,8 +186,16 @@ def check(graph: Any, answer: Any, kind: Optional[str] = None) -> Report:
       {"vertices", "origin", "twin", "next", "prev", "face", "faces"[,
       "out"]}; a missing id is None, -1 or NULL. Validated, then compared up
       to the numbering of half-edges and faces.
-    - None (the default): "dump" for a mapping with "half_edges" or "origin",
-      else "faces". A str is taken as the JSON text of the answer.
+    - "polygons": the bounded faces, each [shell, hole, ...] of rings (vertex
+      ids or coordinates), or {"polygons": [...]}, GeoJSON, or a shapely
+      geometry (anything with __geo_interface__).
+    - "rings": one ring per bounded face, holes filled, or {"rings": [...]}.
+    - None (the default): detected from the shape, as `dcel check` does (a
+      note says so); a mapping with "half_edges" or "origin" is a dump. A
+      str is taken as the JSON text of the answer.
+
+    face_on_right, one_based, unoriented: the conventions of `dcel check
+    --face-on right --one-based --unoriented`.
 
     Returns a Report (a sequence of Difference, empty when the answer agrees).
     A malformed answer is one "unreadable-answer" difference, as in
@@ -183,14 +207,12 @@ def check(graph: Any, answer: Any, kind: Optional[str] = None) -> Report:
     try:
         text = answer_text(answer, kind)
     except (TypeError, ValueError, KeyError, OverflowError) as e:
-        text = None
-        why = f"{type(e).__name__}: {e}"
-    if text is None:
-        message = f"answer: cannot be written as a {kind or 'faces or dump'} document: {why}"
+        message = f"answer: cannot be written as a {kind or 'JSON'} document: {type(e).__name__}: {e}"
         difference = Difference("unreadable-answer", message, [])
         return Report([difference], 0, f"1 difference\nunreadable-answer: {message}\n", kind or "faces")
-    differences, unlisted, report, read_as = _dcel._check_text(reference, text, kind or "auto")
-    return Report(differences, unlisted, report, read_as)
+    differences, unlisted, report, read_as, notes = _dcel._check_text(
+        reference, text, kind or "auto", face_on_right, one_based, unoriented)
+    return Report(differences, unlisted, report, read_as, notes)
 
 
 def validate(dump: Any) -> List[Violation]:

@@ -152,18 +152,21 @@ def _svg_path(graph_json: str, answer_json: str) -> str:
     return os.path.join(folder, name + ".svg")
 
 
-def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None) -> None:
+def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None, **conventions: bool) -> None:
     """Raise AssertionError unless answer is right for graph.
 
-    answer: every boundary cycle as vertex ids (a list of lists), or a dump
-    (see dcel.check, whose kinds this takes). On failure the message shows
+    answer: every boundary cycle as vertex ids (a list of lists, read as
+    faces), or any answer dcel.check takes, with its kind and conventions
+    (face_on_right, one_based, unoriented). On failure the message shows
     the graph, the reference's faces, the answer, every difference, and the
     path of an SVG drawing of the reference with the differing cycles in red
     (in $DCEL_SVG_DIR, or dcel-failures/ in the temporary directory).
     """
     __tracebackhide__ = True  # pytest shows the caller's line, not this function's body
     reference = graph if isinstance(graph, _dcel.Dcel) else _dcel.build(graph)
-    report = check(reference, answer, kind=kind)
+    if kind is None and isinstance(answer, (list, tuple)):
+        kind = "faces"  # what this assertion is named for; dcel.check would detect it and say so
+    report = check(reference, answer, kind=kind, **conventions)
     if report.agrees:
         return
     graph_json = reference.graph().to_json()
@@ -188,6 +191,9 @@ def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None) -> No
     lines += [f"  {d.kind}: {d.message}" for d in report]
     if report.unlisted:
         lines.append(f"  ... and {report.unlisted} more not listed")
+    if report.notes:
+        lines.append("notes (dcel check's words):")
+        lines += ["  " + note for note in report.notes]
     lines.append(f"drawn in {path}")
     raise AssertionError("\n".join(lines))
 

@@ -1,11 +1,13 @@
 // Checking answers in-process: the text entry points behind dcel.check() and
 // dcel.validate() (python/dcel/_check.py turns Python answers into the JSON
 // documents of docs/formats.md and hands them here). The reading is the
-// library's own (io::read_faces_answer, io::read_dump), so a Python answer is
+// library's own (check::read_answer, io::read_dump), so a Python answer is
 // read exactly as `dcel check` reads the same answer from a file.
+#include <optional>
 #include <utility>
 
 #include "binding.hpp"
+#include "dcel/check/answer.hpp"
 #include "dcel/check/compare.hpp"
 #include "dcel/check/report.hpp"
 #include "dcel/error.hpp"
@@ -16,18 +18,18 @@
 namespace dcel::python {
 namespace {
 
-// The report, and the kind the answer was read as (kind, or for "auto" what
-// io::read_answer found: a dump when the text has "half_edges").
-std::pair<check::Report, std::string> compare_text(const Dcel& reference, const std::string& text, std::string kind) {
+// The report, and the kind the answer was read as: the library's own reading
+// (check::read_answer, the kind given or detected from the answer's shape)
+// and comparison under the conventions, as `dcel check` does.
+std::pair<check::Report, std::string> compare_text(const Dcel& reference, const std::string& text,
+                                                   const std::optional<check::AnswerKind>& kind,
+                                                   const check::Conventions& conventions) {
     try {
-        if (kind == "faces") return {check::compare_faces(reference, io::read_faces_answer(text)), kind};
-        if (kind == "dump") return {check::compare_dump(reference, io::read_dump(text)), kind};
-        auto parsed = io::read_answer(text);
-        if (auto* faces = std::get_if<check::FacesAnswer>(&parsed))
-            return {check::compare_faces(reference, *faces), "faces"};
-        return {check::compare_dump(reference, std::get<DcelDump>(parsed)), "dump"};
+        const check::Answer answer = check::read_answer(text, kind);
+        return {check::compare(reference, answer, conventions), std::string(check::answer_kind_name(answer.kind))};
     } catch (const InvalidInput& e) {
-        return {check::unreadable_answer(std::string("answer: ") + e.what()), kind == "auto" ? "faces" : kind};
+        return {check::unreadable_answer(std::string("answer: ") + e.what()),
+                std::string(check::answer_kind_name(kind.value_or(check::AnswerKind::Faces)))};
     }
 }
 
@@ -46,14 +48,18 @@ py::list violations_to_python(const std::vector<Violation>& all) {
 void bind_check(py::module_& m) {
     m.def(
         "_check_text",
-        [](const DcelObject& reference, const std::string& text, const std::string& kind) {
-            if (kind != "faces" && kind != "dump" && kind != "auto") {
-                throw InvalidInput(InputErrorKind::Shape, "check: unknown kind \"" + kind + "\"");
+        [](const DcelObject& reference, const std::string& text, const std::string& kind, bool face_on_right, bool one_based,
+           bool unoriented) {
+            std::optional<check::AnswerKind> chosen;
+            if (kind != "auto") {
+                chosen = check::answer_kind_from_name(kind);
+                if (!chosen) throw InvalidInput(InputErrorKind::Shape, "check: unknown kind \"" + kind + "\"");
             }
+            const check::Conventions conventions{face_on_right, one_based, unoriented};
             std::pair<check::Report, std::string> result;
             {
                 const py::gil_scoped_release unlocked;
-                result = compare_text(reference.get(), text, kind);
+                result = compare_text(reference.get(), text, chosen, conventions);
             }
             const check::Report& report = result.first;
             const py::object type = value_type("Difference");
@@ -63,11 +69,15 @@ void bind_check(py::module_& m) {
                 for (const Index v : d.vertices) vertices.append(v);
                 differences.append(type(std::string(check::kind_name(d.kind)), d.message, vertices));
             }
-            return py::make_tuple(differences, report.unlisted, check::report_text(report), result.second);
+            py::list notes;
+            for (const std::string& note : report.notes) notes.append(note);
+            return py::make_tuple(differences, report.unlisted, check::report_text(report), result.second, notes);
         },
-        py::arg("reference"), py::arg("text"), py::arg("kind"),
-        "(differences, unlisted, report text, kind read) of an answer given as JSON text of the given kind "
-        "(\"faces\", \"dump\", or \"auto\": a dump when it has \"half_edges\").");
+        py::arg("reference"), py::arg("text"), py::arg("kind"), py::arg("face_on_right") = false,
+        py::arg("one_based") = false, py::arg("unoriented") = false,
+        "(differences, unlisted, report text, kind read, notes) of an answer given as JSON text of a kind "
+        "(\"faces\", \"dump\", \"polygons\", \"rings\", or \"auto\": detected from its shape), as `dcel "
+        "check` reads and compares it.");
     m.def(
         "_validate_text",
         [](const std::string& text) {

@@ -164,7 +164,7 @@ def test_validate_refuses_what_is_not_a_dump():
 
 
 def test_the_report_is_a_sequence_with_the_cli_text():
-    report = dcel.check(TRIANGLE, [[0, 1, 2], [0, 1, 2]])
+    report = dcel.check(TRIANGLE, [[0, 1, 2], [0, 1, 2]], kind="faces")
     assert len(report) == 1 and list(report) == [report[0]] and report[:1] == [report[0]]
     assert report[0] == dcel.Difference("reversed-cycle", report[0].message, [0, 1, 2])
     assert report.text == "1 difference\nreversed-cycle: " + report[0].message + "\n"
@@ -209,3 +209,51 @@ def test_random_corruptions_of_a_dump_are_never_accepted(data):
         assert violations == [] and report.agrees
     else:
         assert violations and not report.agrees, (h, field, value)
+
+
+# The answer kinds of the checker (docs/checking.md): NESTED's bounded faces
+# by hand. Face 1 is the square with the triangle as its hole (and the
+# isolated vertex 7 inside, which polygons cannot see); face 2 the triangle.
+SQUARE_SHELL, TRIANGLE_HOLE, TRIANGLE_SHELL = [0, 1, 2, 3], [4, 6, 5], [4, 5, 6]
+
+
+def test_polygons_and_rings_by_hand():
+    polygons = [[SQUARE_SHELL, TRIANGLE_HOLE], [TRIANGLE_SHELL]]
+    for answer, kind in ((polygons, "polygons"), ({"polygons": polygons}, None),
+                         ([SQUARE_SHELL, TRIANGLE_SHELL], "rings"), ({"rings": [SQUARE_SHELL, TRIANGLE_SHELL]}, None)):
+        report = dcel.check(NESTED, answer, kind=kind)
+        assert report.agrees and report.kind in ("polygons", "rings"), report.text
+    points = [[list(map(float, NESTED[0][v])) for v in ring] for ring in (SQUARE_SHELL, TRIANGLE_HOLE)]
+    assert dcel.check(NESTED, [points, [[list(map(float, NESTED[0][v])) for v in TRIANGLE_SHELL]]],
+                      kind="polygons").agrees
+    forgot_the_hole = dcel.check(NESTED, [[SQUARE_SHELL], [TRIANGLE_SHELL]], kind="polygons")
+    assert kinds(forgot_the_hole) == ["wrong-hole"], forgot_the_hole.text
+    reversed_rings = [[list(reversed(SQUARE_SHELL)), list(reversed(TRIANGLE_HOLE))], [list(reversed(TRIANGLE_SHELL))]]
+    clockwise = dcel.check(NESTED, reversed_rings, kind="polygons")
+    assert set(kinds(clockwise)) == {"wrong-orientation"} and any("face-on right" in n for n in clockwise.notes)
+    assert dcel.check(NESTED, reversed_rings, kind="polygons", face_on_right=True).agrees
+    assert dcel.check(NESTED, reversed_rings, kind="polygons", unoriented=True).agrees
+
+
+def test_conventions_and_notes():
+    cycles = dcel.faces(*NESTED)
+    detected = dcel.check(NESTED, cycles)
+    assert detected.agrees and detected.kind == "faces" and detected.notes  # a bare list: the note says how it was read
+    assert not dcel.check(NESTED, {"faces": cycles}).notes
+    one_based = [[v + 1 for v in c] for c in cycles]
+    assert not dcel.check(NESTED, {"faces": one_based}).agrees
+    assert dcel.check(NESTED, {"faces": one_based}, one_based=True).agrees
+    backwards = [list(reversed(c)) for c in cycles]
+    assert dcel.check(NESTED, {"faces": backwards}, face_on_right=True).agrees
+
+
+def test_a_shapely_polygonize_answer():
+    shapely = pytest.importorskip("shapely")
+    from shapely.geometry import GeometryCollection, LineString
+    from shapely.ops import polygonize
+
+    vertices, edges = NESTED
+    pieces = GeometryCollection(list(polygonize([LineString([vertices[u], vertices[v]]) for u, v in edges])))
+    report = dcel.check(NESTED, pieces)  # GeoJSON through __geo_interface__; GEOS writes shells clockwise
+    assert report.kind == "polygons" and not report.agrees, report.text
+    assert dcel.check(NESTED, pieces, unoriented=True).agrees or dcel.check(NESTED, pieces, face_on_right=True).agrees
