@@ -377,7 +377,10 @@ void bind_dcel(py::module_& m) {
         .def(
             "svg",
             [](const DcelObject& s, const std::string& title, const std::vector<std::vector<Index>>& highlight) {
-                return io::render_svg(s.get(), io::SvgOptions{title, highlight});
+                io::SvgOptions options;
+                options.title = title;
+                options.highlight_cycles = highlight;
+                return io::render_svg(s.get(), options);
             },
             py::kw_only(), py::arg("title") = "", py::arg("highlight") = std::vector<std::vector<Index>>{},
             "An SVG picture (faces tinted, half-edges as arrows, vertex ids); highlight: vertex cycles drawn in red.")
