@@ -94,12 +94,6 @@ std::string numbered(const std::string& path, std::size_t id) {
     return path.substr(0, dot) + "-" + std::to_string(id) + path.substr(dot);
 }
 
-void write_file(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
-    out << text;
-    if (!out.flush()) throw UsageError("cannot write " + path + ": " + std::strerror(errno));
-}
 
 // The counterexample with the reference and the answer side by side, and an
 // inset at each vertex where the answer turns differently (docs/pictures.md).
@@ -219,17 +213,22 @@ void add_diff_command(CLI::App& app, Action& action) {
         action = [options, raw, answer, impl] {
             DiffOptions o = *options;
             o.answer = *answer;
-            o = resolve(*raw, std::move(o));
-            if (!raw->print_case.empty()) {
-                const std::size_t n = parse_count("--print-case", raw->print_case, 0, std::uint64_t{1} << 40);
-                const std::optional<Case> c = make_case(o.schedule, n);
-                if (!c) throw UsageError("case " + std::to_string(n) + " has no graph in the allowed coordinate classes");
-                write_stdout(c->text);
-                return kExitOk;
-            }
-            if (impl->count() == 0) throw UsageError("diff: --impl CMD is required (the program to check)");
-            if (o.impl.find_first_not_of(" \t\n") == std::string::npos) {
-                throw UsageError("--impl: the command is empty; give the program to check, e.g. --impl 'python3 mine.py'");
+            try {
+                o = resolve(*raw, std::move(o));
+                if (!raw->print_case.empty()) {
+                    const std::size_t n = parse_count("--print-case", raw->print_case, 0, std::uint64_t{1} << 40);
+                    const std::optional<Case> c = make_case(o.schedule, n);
+                    if (!c) throw UsageError("case " + std::to_string(n) + " has no graph in the allowed coordinate classes");
+                    write_stdout(c->text);
+                    return kExitOk;
+                }
+                if (impl->count() == 0) throw UsageError("--impl CMD is required (the program to check)");
+                if (o.impl.find_first_not_of(" \t\n") == std::string::npos) {
+                    throw UsageError("--impl: the command is empty; give the program to check, e.g. --impl 'python3 mine.py'");
+                }
+            } catch (const UsageError& e) {
+                // The same shape as the errors CLI11 reports for the other commands.
+                throw UsageError(std::string("diff: ") + e.what() + " (dcel diff --help)");
             }
             const bool tty = ::isatty(STDERR_FILENO) != 0;
             auto last = std::chrono::steady_clock::now();

@@ -21,7 +21,7 @@ void add_faces_command(CLI::App& app, Action& action) {
     cmd->callback([&action, path, kind] {
         action = [path, kind] {
             const PlanarGraph g = load_graph(*path);
-            const Dcel d = with_source(*path, [&] { return build(g); });
+            const Dcel d = build_dcel(*path, g);
             write_stdout(check::reference_answer(d, *check::answer_kind_from_name(*kind)));
             return kExitOk;
         };

@@ -1,7 +1,7 @@
-// Strict readers of numeric option values for `dcel diff`: the whole word must
-// be a number of the right kind and range, with the value the user typed in
-// the message otherwise (no wrap-around of -1 into 2^64 - 1, no NaN, no silent
-// clamping of 1e300).
+// Numeric option values for `dcel diff`, which reads them after parsing (the
+// schedule options depend on each other): cli_support's strict parsers, so
+// the messages are every command's ("--cases: expected an integer from 1 to
+// ..., found \"0\"").
 #pragma once
 
 #include <chrono>
