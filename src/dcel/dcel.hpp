@@ -140,6 +140,11 @@ public:
     [[nodiscard]] const std::vector<Point>& points() const { return points_; }
     [[nodiscard]] const std::vector<VertexId>& origins() const { return origin_; }
     [[nodiscard]] const std::vector<HalfEdgeId>& next_links() const { return next_; }
+    // The rest of the arrays, for bindings that hand them out without copying
+    // (the Python module's numpy views): prev(h), face(h) and out(v).
+    [[nodiscard]] const std::vector<HalfEdgeId>& prev_links() const { return prev_; }
+    [[nodiscard]] const std::vector<FaceId>& left_faces() const { return face_; }
+    [[nodiscard]] const std::vector<HalfEdgeId>& out_links() const { return out_; }
 
 private:
     [[nodiscard]] const FaceRecord& record(FaceId f) const {

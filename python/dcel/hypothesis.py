@@ -1,0 +1,205 @@
+"""Hypothesis strategies for planar straight-line graphs, and an assertion.
+
+    from hypothesis import given
+    from dcel.hypothesis import planar_graphs, assert_same_faces
+
+    @given(planar_graphs())
+    def test_my_faces(graph):
+        assert_same_faces(graph, my_faces(graph.vertices, graph.edges))
+
+planar_graphs() draws from the library's own generators (the ones `dcel gen`,
+`dcel diff` and the C++ property tests use) with a seed that Hypothesis
+draws, so Hypothesis controls every graph and replays it from its database.
+Shrinking: the size is drawn first, then each vertex and each edge is kept or
+dropped by a draw of its own, so Hypothesis shrinks a failure by dropping
+vertices and edges one at a time (a subgraph of a valid graph is valid) and
+by asking for smaller sizes.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import re
+import tempfile
+from typing import Any, Optional, Sequence
+
+from hypothesis import assume
+from hypothesis import strategies as st
+
+from . import _dcel
+from ._check import check
+from ._types import Graph
+
+__all__ = ["planar_graphs", "assert_same_faces", "COORDINATES"]
+
+# planar_graphs(coordinates=...):
+#   "any"       as the generators make them: small integers, and from the
+#               near-degenerate family huge offsets with differences of one
+#               unit in the last place, subnormals, -0.0, directions 1e-30 rad
+#               apart; sometimes moved by an exact transform (a translation,
+#               a rotation by 90 degrees, a mirror image, a scaling by 2**k)
+#   "integers"  integers of magnitude at most 2**30, so that differences of
+#               coordinates and their cross products fit in 64-bit integers
+#               (the near-degenerate family is left out)
+COORDINATES = ("any", "integers")
+_INTEGER_LIMIT = 2.0**30
+
+# The near-degenerate family is where exactness bugs show (directions 1e-30
+# rad apart, offsets with differences of one unit in the last place): it is
+# drawn half the time when other families are drawn too (the others share
+# the other half evenly).
+_DEGENERATE = "near-degenerate"
+_DEGENERATE_SHARE = 2
+
+# How often a drawn element is dropped while generating (1 in _KEEP_RANGE + 1);
+# shrinking drops more.
+_KEEP_RANGE = 15
+
+
+def planar_graphs(
+    families: Optional[Sequence[str]] = None,
+    max_vertices: int = 40,
+    coordinates: str = "any",
+    min_vertices: int = 0,
+) -> st.SearchStrategy[Graph]:
+    """Valid planar straight-line graphs, as Graph(vertices, edges) of lists.
+
+    families: names from dcel.families() (default: all of them, or all but
+    "near-degenerate" when coordinates="integers"). min_vertices,
+    max_vertices: the range of the size asked of the generator, which makes
+    exactly that many vertices; about one vertex and one edge in 16 is then
+    dropped. coordinates: "any" or "integers" (see COORDINATES). Every graph
+    is one that dcel.build() accepts.
+    """
+    known = _dcel.families()
+    if coordinates not in COORDINATES:
+        raise ValueError(f"planar_graphs: coordinates must be one of {COORDINATES}, not {coordinates!r}")
+    if families is None:
+        families = [f for f in known if not (coordinates == "integers" and f == "near-degenerate")]
+    families = list(families)
+    unknown = [f for f in families if f not in known]
+    if not families or unknown:
+        raise ValueError(f"planar_graphs: unknown families {unknown}; the families are {', '.join(known)}")
+    if not 0 <= min_vertices <= max_vertices <= 10000:
+        raise ValueError("planar_graphs: need 0 <= min_vertices <= max_vertices <= 10000")
+    if _DEGENERATE in families and len(families) > 1:
+        others = len(families) - 1
+        families += [_DEGENERATE] * max(0, round(others / (_DEGENERATE_SHARE - 1)) - 1)
+    return _graphs(families, min_vertices, max_vertices, coordinates)
+
+
+@st.composite
+def _graphs(draw: Any, families: Sequence[str], min_vertices: int, max_vertices: int, coordinates: str) -> Graph:
+    size = draw(st.integers(min_vertices, max_vertices))  # first: the shrinker lowers it first
+    family = draw(st.sampled_from(families))
+    seed = draw(st.integers(0, 2**64 - 1))
+    g = _dcel.generate(family, seed, size)
+    keep = [draw(st.integers(0, _KEEP_RANGE)) != 0 for _ in g.vertices]
+    g = _subgraph(g, keep, [draw(st.integers(0, _KEEP_RANGE)) != 0 for _ in g.edges])
+    if coordinates == "integers":
+        scaled = _as_integers(g)
+        assume(scaled is not None)
+        assert scaled is not None
+        return scaled
+    return g
+
+
+def _subgraph(g: Graph, keep_vertex: Sequence[bool], keep_edge: Sequence[bool]) -> Graph:
+    """The vertices and edges kept, renumbered in order (an edge goes with either end)."""
+    new_id: dict = {}
+    vertices: list = []
+    for v, (p, kept) in enumerate(zip(g.vertices, keep_vertex)):
+        if kept:
+            new_id[v] = len(vertices)
+            vertices.append(p)
+    edges = [
+        (new_id[u], new_id[v]) for (u, v), kept in zip(g.edges, keep_edge) if kept and u in new_id and v in new_id
+    ]
+    return Graph(vertices, edges)
+
+
+def _as_integers(g: Graph) -> Optional[Graph]:
+    """g scaled by the power of two that makes every coordinate an integer
+    (exact), or None when that exceeds the limit."""
+    k = 0
+    for x, y in g.vertices:
+        for c in (x, y):
+            while not float(c * 2.0**k).is_integer():
+                k += 1
+                if k > 1100:
+                    return None
+    scaled = _dcel.transform(g, "scale-pow2", k) if k else g
+    if scaled is None or any(abs(c) > _INTEGER_LIMIT for p in scaled.vertices for c in p):
+        return None
+    return Graph([(float(x), float(y)) for x, y in scaled.vertices], scaled.edges)
+
+
+def _shorten(text: str, limit: int = 4000) -> str:
+    return text if len(text) <= limit else text[:limit] + f" ... ({len(text) - limit} more characters)"
+
+
+def _svg_path(graph_json: str, answer_json: str) -> str:
+    """One file per test (pytest names it), overwritten by each failure: under
+    Hypothesis the last failure is the shrunk example it reports."""
+    folder = os.environ.get("DCEL_SVG_DIR") or os.path.join(tempfile.gettempdir(), "dcel-failures")
+    os.makedirs(folder, exist_ok=True)
+    test = os.environ.get("PYTEST_CURRENT_TEST", "")
+    if test:
+        name = re.sub(r"[^A-Za-z0-9_.-]+", "_", test.split(" ")[0])[-120:]
+    else:
+        name = hashlib.sha1((graph_json + answer_json).encode()).hexdigest()[:16]
+    return os.path.join(folder, name + ".svg")
+
+
+def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None, **conventions: bool) -> None:
+    """Raise AssertionError unless answer is right for graph.
+
+    answer: every boundary cycle as vertex ids (a list of lists, read as
+    faces), or any answer dcel.check takes, with its kind and conventions
+    (face_on_right, one_based, unoriented). On failure the message shows
+    the graph, the reference's faces, the answer, every difference, and the
+    path of an SVG drawing of the reference with the differing cycles in red
+    (in $DCEL_SVG_DIR, or dcel-failures/ in the temporary directory).
+    """
+    __tracebackhide__ = True  # pytest shows the caller's line, not this function's body
+    reference = graph if isinstance(graph, _dcel.Dcel) else _dcel.build(graph)
+    if kind is None and isinstance(answer, (list, tuple)):
+        kind = "faces"  # what this assertion is named for; dcel.check would detect it and say so
+    report = check(reference, answer, kind=kind, **conventions)
+    if report.agrees:
+        return
+    graph_json = reference.graph().to_json()
+    answer_json = _answer_json(answer)
+    path = _svg_path(graph_json, answer_json)
+    highlight = [d.vertices for d in report if d.vertices][:8]
+    count = len(report) + report.unlisted
+    first = report[0].kind if len(report) else "differs"
+    title = f"the reference; red: where the answer differs ({first}, {count} in all)"
+    with open(path, "w", encoding="utf-8") as f:
+        f.write(reference.svg(title=title, highlight=highlight))
+    lines = [
+        f"the answer differs from the reference ({count} difference{'s' if count != 1 else ''})",
+        f"graph ({reference.num_vertices} vertices, {reference.num_edges} edges):",
+        "  " + _shorten(graph_json),
+        "reference (dcel faces):",
+        "  " + _shorten(json.dumps(reference.boundary_cycles())),
+        "answer:",
+        "  " + _shorten(answer_json),
+        "differences:",
+    ]
+    lines += [f"  {d.kind}: {d.message}" for d in report]
+    if report.unlisted:
+        lines.append(f"  ... and {report.unlisted} more not listed")
+    if report.notes:
+        lines.append("notes (dcel check's words):")
+        lines += ["  " + note for note in report.notes]
+    lines.append(f"drawn in {path}")
+    raise AssertionError("\n".join(lines))
+
+
+def _answer_json(answer: Any) -> str:
+    try:
+        return json.dumps(answer, default=lambda v: v.tolist() if hasattr(v, "tolist") else repr(v))
+    except (TypeError, ValueError):
+        return repr(answer)

@@ -1,0 +1,95 @@
+// Checking answers in-process: the text entry points behind dcel.check() and
+// dcel.validate() (python/dcel/_check.py turns Python answers into the JSON
+// documents of docs/formats.md and hands them here). The reading is the
+// library's own (check::read_answer, io::read_dump), so a Python answer is
+// read exactly as `dcel check` reads the same answer from a file.
+#include <optional>
+#include <utility>
+
+#include "binding.hpp"
+#include "dcel/check/answer.hpp"
+#include "dcel/check/compare.hpp"
+#include "dcel/check/report.hpp"
+#include "dcel/error.hpp"
+#include "dcel/io/dcel_json.hpp"
+#include "dcel/validate.hpp"
+#include "dcel_object.hpp"
+
+namespace dcel::python {
+namespace {
+
+// The report, and the kind the answer was read as: the library's own reading
+// (check::read_answer, the kind given or detected from the answer's shape)
+// and comparison under the conventions, as `dcel check` does.
+std::pair<check::Report, std::string> compare_text(const Dcel& reference, const std::string& text,
+                                                   const std::optional<check::AnswerKind>& kind,
+                                                   const check::Conventions& conventions) {
+    try {
+        const check::Answer answer = check::read_answer(text, kind);
+        return {check::compare(reference, answer, conventions), std::string(check::answer_kind_name(answer.kind))};
+    } catch (const InvalidInput& e) {
+        return {check::unreadable_answer(std::string("answer: ") + e.what()),
+                std::string(check::answer_kind_name(kind.value_or(check::AnswerKind::Faces)))};
+    }
+}
+
+}  // namespace
+
+py::list violations_to_python(const std::vector<Violation>& all) {
+    const py::object type = value_type("Violation");
+    py::list out;
+    for (const Violation& v : all) {
+        out.append(type(to_string(v.invariant), v.message, ids_to_python(v.vertices), ids_to_python(v.half_edges),
+                        ids_to_python(v.faces)));
+    }
+    return out;
+}
+
+void bind_check(py::module_& m) {
+    m.def(
+        "_check_text",
+        [](const DcelObject& reference, const std::string& text, const std::string& kind, bool face_on_right, bool one_based,
+           bool unoriented) {
+            std::optional<check::AnswerKind> chosen;
+            if (kind != "auto") {
+                chosen = check::answer_kind_from_name(kind);
+                if (!chosen) throw InvalidInput(InputErrorKind::Shape, "check: unknown kind \"" + kind + "\"");
+            }
+            const check::Conventions conventions{face_on_right, one_based, unoriented};
+            std::pair<check::Report, std::string> result;
+            {
+                const py::gil_scoped_release unlocked;
+                result = compare_text(reference.get(), text, chosen, conventions);
+            }
+            const check::Report& report = result.first;
+            const py::object type = value_type("Difference");
+            py::list differences;
+            for (const check::Difference& d : report.differences) {
+                py::list vertices;
+                for (const Index v : d.vertices) vertices.append(v);
+                differences.append(type(std::string(check::kind_name(d.kind)), d.message, vertices));
+            }
+            py::list notes;
+            for (const std::string& note : report.notes) notes.append(note);
+            return py::make_tuple(differences, report.unlisted, check::report_text(report), result.second, notes);
+        },
+        py::arg("reference"), py::arg("text"), py::arg("kind"), py::arg("face_on_right") = false,
+        py::arg("one_based") = false, py::arg("unoriented") = false,
+        "(differences, unlisted, report text, kind read, notes) of an answer given as JSON text of a kind "
+        "(\"faces\", \"dump\", \"polygons\", \"rings\", or \"auto\": detected from its shape), as `dcel "
+        "check` reads and compares it.");
+    m.def(
+        "_validate_text",
+        [](const std::string& text) {
+            std::vector<Violation> found;
+            {
+                DcelDump dump = io::read_dump(text);  // InvalidInput when it is not a dump
+                const py::gil_scoped_release unlocked;
+                found = validate_all(dump);
+            }
+            return violations_to_python(found);
+        },
+        py::arg("text"), "Every broken invariant of a dump given as JSON text (the `dcel build` format).");
+}
+
+}  // namespace dcel::python
