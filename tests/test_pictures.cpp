@@ -351,3 +351,34 @@ TEST(Pictures, RegionsAndOddAnswers) {
 }
 
 }  // namespace
+
+namespace {
+
+// render_svg's highlighted cycles (the Python binding's svg(highlight=...)):
+// one red arrow per step, drawn along the edge where the step is one and
+// dashed straight across where it is not; steps naming a vertex the graph
+// does not have are skipped.
+TEST(Pictures, HighlightedCycles) {
+    const dcel::Dcel d = dcel::build(dcel::io::read_graph(kSquareHole));
+    dcel::io::SvgOptions options;
+    // The square (4 edges), v4 -> v7 -> v4 (no edge: 2 dashed steps), and a
+    // cycle through v99 whose two steps are skipped.
+    options.highlight_cycles = {{0, 1, 2, 3}, {4, 7}, {99, 0}};
+    const std::string svg = dcel::io::render_svg(d, options);
+    const std::size_t group = svg.find("<g id=\"highlight\"");
+    ASSERT_NE(group, std::string::npos);
+    const std::string highlighted = svg.substr(group, svg.find("</g>\n</g>", group) - group);
+    std::size_t arrows = 0, dashed = 0;
+    for (std::size_t at = highlighted.find("<g class=\"highlight\">"); at != std::string::npos;
+         at = highlighted.find("<g class=\"highlight\">", at + 1)) {
+        ++arrows;
+        const std::string one = highlighted.substr(at, highlighted.find("</g>", at) - at);
+        if (one.find("stroke-dasharray") != std::string::npos) ++dashed;
+    }
+    EXPECT_EQ(arrows, 6U);
+    EXPECT_EQ(dashed, 2U);
+    EXPECT_NE(svg.find("red: highlighted cycles"), std::string::npos);
+    EXPECT_EQ(dcel::io::render_svg(d).find("highlight"), std::string::npos);
+}
+
+}  // namespace

@@ -28,8 +28,8 @@ std::string family_list() {
 void add_gen_command(CLI::App& app, Action& action) {
     auto* cmd = app.add_subcommand("gen", "Print a random valid graph (JSON) from the shared generators");
     cmd->footer("Families: " + family_list() +
-                ".\nThe same family, seed and size give the same graph everywhere; a family may\n"
-                "produce somewhat fewer vertices than asked.\n"
+                ".\nThe same family, seed and size give the same graph on every machine and\n"
+                "compiler, with exactly the vertices asked.\n"
                 "Example:\n"
                 "  dcel gen --family nested-polygons --seed 7 --vertices 30 | dcel faces");
     auto family = std::make_shared<std::string>("random-segments");

@@ -1,9 +1,7 @@
 // dcel: the command-line face of the exact reference DCEL.
 // Exit codes: 0 success, 1 invalid input or a difference found, 2 usage error.
 #include <fcntl.h>
-#include <unistd.h>
 
-#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <new>
@@ -15,7 +13,6 @@
 #include "commands.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
-#include "dcel/io/decimal.hpp"
 #include "status_line.hpp"
 
 namespace {
@@ -37,14 +34,12 @@ void print_error(std::string_view message) {
 // to the next file opened, and output meant for stdout would land in it.
 // Each closed one gets /dev/null opened the wrong way round instead, so that
 // reading stdin or writing stdout fails (EBADF) and is reported.
+// open() returns the lowest free descriptor, which is fd itself: the ones
+// below it are open or were filled on earlier turns of the loop.
 void guard_standard_descriptors() {
     for (int fd = 0; fd <= 2; ++fd) {
         if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
-        const int opened = ::open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY);
-        if (opened >= 0 && opened != fd) {
-            ::dup2(opened, fd);
-            ::close(opened);
-        }
+        (void)::open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY);
     }
 }
 
@@ -73,36 +68,6 @@ int print_help(CLI::App& app, const CLI::ParseError& e) {
     return finish(code == 0 ? kExitOk : kExitUsage);
 }
 
-// CLI11 writes range bounds in full ("not in range 0.000000 to 179769...",
-// 309 digits for the largest double): such a number, more than 24 digits
-// long, is shown in its shortest form instead (1.7976931348623157e+308).
-std::string shorten_numbers(const std::string& text) {
-    std::string out;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        std::size_t end = i;
-        while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end])) != 0) ++end;
-        if (end < text.size() && text[end] == '.') {
-            std::size_t frac = end + 1;
-            while (frac < text.size() && std::isdigit(static_cast<unsigned char>(text[frac])) != 0) ++frac;
-            if (frac > end + 1) end = frac;
-        }
-        if (end - i > 24) {
-            double value = 0;
-            const std::string digits = text.substr(i, end - i);
-            const auto [ptr, ec] = dcel::io::parse_double(digits.data(), digits.data() + digits.size(), value);
-            out += ec == std::errc() && ptr == digits.data() + digits.size() ? dcel::format_double(value) : digits;
-            i = end;
-        } else if (end > i) {
-            out.append(text, i, end - i);
-            i = end;
-        } else {
-            out += text[i++];
-        }
-    }
-    return out;
-}
-
 std::string command_list(const CLI::App& app) {
     std::string names;
     for (const CLI::App* sub : app.get_subcommands({})) names += (names.empty() ? "" : ", ") + sub->get_name();
@@ -128,7 +93,7 @@ std::string usage_message(const CLI::App& app, const CLI::ParseError& e, int arg
             return "no command given; the commands are " + command_list(app) + " (dcel --help)";
         }
     }
-    std::string text = shorten_numbers(e.what());
+    std::string text = e.what();
     if (dynamic_cast<const CLI::ExtrasError*>(&e) != nullptr) {
         // CLI11 lists them last first; each is quoted here, escaped.
         const std::vector<std::string> extras = app.remaining(true);

@@ -25,6 +25,26 @@ check)
     expect bare-array-form 0 '^agrees'
     run "echo '{\"faces\": [[2, 0, 1], [1, 0, 2]]}' | $D check $t -"
     expect rotation-and-order-free 0 '^agrees'
+    # The answer kinds and conventions (--answer, --face-on, --one-based,
+    # --unoriented), on the square with a triangle inside: cycles written by
+    # hand (the square's inside [0, 1, 2, 3] and outside [1, 0, 3, 2], the
+    # triangle's inside [4, 5, 6] and outside [5, 4, 6]).
+    run "echo '{\"rings\": [[0, 1, 2, 3], [4, 5, 6]]}' | $D check $g - --answer rings"
+    expect answer-rings 0 '^agrees'
+    run "echo '{\"polygons\": [[[0, 1, 2, 3], [5, 4, 6]], [[4, 5, 6]]]}' | $D check $g - --answer polygons"
+    expect answer-polygons 0 '^agrees'
+    run "echo '{\"polygons\": [[[3, 2, 1, 0], [4, 5, 6]], [[6, 5, 4]]]}' | $D check $g - --answer polygons --unoriented"
+    expect answer-polygons-unoriented 0 '^agrees'
+    run "echo '[[3, 2, 1, 0], [2, 3, 0, 1], [6, 5, 4], [6, 4, 5]]' | $D check $g - --answer faces --face-on right"
+    expect face-on-right 0 '^agrees'
+    run "echo '[[1, 2, 3, 4], [2, 1, 4, 3], [5, 6, 7], [6, 5, 7]]' | $D check $g - --answer auto --one-based"
+    expect one-based 0 '^agrees'
+    run "echo '[[1, 2, 3, 4], [2, 1, 4, 3], [5, 6, 7], [6, 5, 7]]' | $D check $g -"
+    expect one-based-hint 1 'note: the answer agrees with --one-based: its ids count from 1'
+    run "echo '[[0, 1, 2, 3], [4, 5, 6]]' | $D check $g - --answer dump"
+    expect answer-kind-forced 1 'unreadable-answer: ANSWER <stdin>'
+    run "$D check $g $g --answer shapes"
+    expect answer-kind-unknown 2 'answer: shapes not in \{auto,faces,dump,polygons,rings\}'
     # The first cycle dropped: one missing cycle, the count first.
     run "$D faces $g | sed 's/\\[\\[[^]]*\\], /[/' | $D check $g -"
     expect missing-cycle 1 '^1 difference

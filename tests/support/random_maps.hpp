@@ -25,7 +25,11 @@ inline Dcel random_map(std::uint64_t seed, int steps, int grid) {
                 case 0:
                 case 1: (void)add_vertex(d, {coord(), coord()}); break;
                 case 7:
-                    if (nv > 0) (void)add_edge_to_point(d, VertexId(below(nv)), {coord(), coord()});
+                    if (nv > 0) {
+                        const Point p{coord(), coord()};  // a braced list draws left to right
+                        const VertexId from(below(nv));
+                        (void)add_edge_to_point(d, from, p);
+                    }
                     break;
                 case 8:
                     if (ne > 0) {
@@ -39,7 +43,12 @@ inline Dcel random_map(std::uint64_t seed, int steps, int grid) {
                     if (ne > 0 && below(3) == 0) (void)remove_edge(d, EdgeId(below(ne)));
                     break;
                 default:
-                    if (nv > 1) (void)add_edge(d, VertexId(below(nv)), VertexId(below(nv)));
+                    if (nv > 1) {
+                        // One draw per statement, so that gcc and clang builds make the same map.
+                        const VertexId w(below(nv));
+                        const VertexId u(below(nv));
+                        (void)add_edge(d, u, w);
+                    }
                     break;
             }
         } catch (const TopologyError&) {

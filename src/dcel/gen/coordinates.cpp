@@ -106,8 +106,10 @@ std::optional<PlanarGraph> to_coordinate_class(const PlanarGraph& g, CoordinateC
                 out = apply(base, Transform::ScalePow2, -k);
                 if (out) {
                     const double step = std::ldexp(1.0, -k);
-                    out = translated(*out, step * static_cast<double>(rng.between(-(1 << 20), 1 << 20)) * 3,
-                                     step * static_cast<double>(rng.between(-(1 << 20), 1 << 20)) * 5);
+                    const auto dy = static_cast<double>(
+                        rng.between(-(1 << 20), 1 << 20));  // one draw per statement (rng.hpp)
+                    const auto dx = static_cast<double>(rng.between(-(1 << 20), 1 << 20));
+                    out = translated(*out, step * dx * 3, step * dy * 5);
                 }
             }
             break;

@@ -22,7 +22,10 @@ namespace {
 PlanarGraph thin_fan(Rng& rng, std::size_t n) {
     PlanarGraph g;
     if (n == 0) return g;
-    const std::int64_t N = (std::int64_t{1} << rng.between(20, 50)) + rng.between(0, 1 << 20);
+    // One draw per statement: the operands of + are evaluated in an order the
+    // compiler picks, and a seed must give the same graph in every build.
+    const std::int64_t magnitude = std::int64_t{1} << rng.between(20, 50);
+    const std::int64_t N = magnitude + rng.between(0, 1 << 20);
     g.vertices.push_back(at(0, 0));
     const VertexId centre(0);
     // P_i = (N + i, N + i + 1) on y = x + 1, and Q_i = -P_i on y = x - 1:

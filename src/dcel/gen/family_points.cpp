@@ -138,7 +138,9 @@ void fill_with_isolated(GraphBuilder& b, Rng& rng, std::size_t n) {
     const auto lx = static_cast<std::int64_t>(x0), hx = static_cast<std::int64_t>(x1);
     const auto ly = static_cast<std::int64_t>(y0), hy = static_cast<std::int64_t>(y1);
     for (std::size_t tries = 4 * (n - b.num_vertices()) + 16; tries > 0 && b.num_vertices() < n; --tries) {
-        (void)b.add_point(at(rng.between(lx - 2, hx + 2), rng.between(ly - 2, hy + 2)));
+        const std::int64_t y = rng.between(ly - 2, hy + 2);  // one draw per statement (rng.hpp)
+        const std::int64_t x = rng.between(lx - 2, hx + 2);
+        (void)b.add_point(at(x, y));
     }
     // Above the bounding box no point can be taken or lie on an edge.
     for (std::int64_t k = 0; b.num_vertices() < n; ++k) (void)b.add_point(at(lx + k, hy + 3 + rng.between(0, 1)));

@@ -98,7 +98,9 @@ PlanarGraph random_segments(Rng& rng, std::size_t n) {
     if (n < 2) return b.take();
     const auto v = static_cast<Index>(n);
     for (std::int64_t tries = isqrt(n) + 2; tries > 0; --tries) {
-        (void)b.add_edge(VertexId(static_cast<Index>(rng.below(v))), VertexId(static_cast<Index>(rng.below(v))));
+        const auto w = static_cast<Index>(rng.below(v));  // one draw per statement (rng.hpp)
+        const auto u = static_cast<Index>(rng.below(v));
+        (void)b.add_edge(VertexId(u), VertexId(w));
     }
     for (std::size_t tries = 0; tries < 3 * n; ++tries) {
         const auto u = static_cast<Index>(rng.below(v));

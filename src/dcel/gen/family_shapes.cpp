@@ -223,7 +223,13 @@ PlanarGraph components(Rng& rng, std::size_t n) {
     PlanarGraph g;
     const std::int64_t cell = 8;
     const std::int64_t across = isqrt(n) + 1;
-    auto inner = [&] { return rng.between(1, cell - 1); };
+    // A point strictly inside the cell, y drawn first. One draw per statement
+    // (rng.hpp): at(draw(), draw()) would draw in the compiler's order.
+    auto inner = [&] {
+        const std::int64_t y = rng.between(1, cell - 1);
+        const std::int64_t x = rng.between(1, cell - 1);
+        return at(x, y);
+    };
     for (std::int64_t c = 0; g.vertices.size() < n; ++c) {
         const std::size_t room = n - g.vertices.size();
         GraphBuilder b(cell);
@@ -232,10 +238,15 @@ PlanarGraph components(Rng& rng, std::size_t n) {
             kind = 0;
         }
         switch (kind) {
-            case 0: (void)b.add_point(at(inner(), inner())); break;
-            case 1: (void)b.add_segment(at(inner(), inner()), at(inner(), inner())); break;
+            case 0: (void)b.add_point(inner()); break;
+            case 1: {
+                const Point q = inner();  // q first: the order gen.digests records
+                const Point p = inner();
+                (void)b.add_segment(p, q);
+                break;
+            }
             case 2: {
-                const Point p = at(inner(), inner()), q = at(inner(), inner()), s = at(inner(), inner());
+                const Point p = inner(), q = inner(), s = inner();
                 if (exact_orient(p, q, s) == Sign::Zero) break;
                 (void)b.add_segment(p, q);
                 (void)b.add_segment(q, s);
@@ -248,13 +259,16 @@ PlanarGraph components(Rng& rng, std::size_t n) {
                 (void)b.add_segment(at(hi, lo), at(hi, hi));
                 (void)b.add_segment(at(hi, hi), at(lo, hi));
                 (void)b.add_segment(at(lo, hi), at(lo, lo));
-                (void)b.add_point(at(rng.between(lo + 1, hi - 1), rng.between(lo + 1, hi - 1)));  // strictly inside
+                // Strictly inside; one draw per statement (rng.hpp).
+                const std::int64_t y = rng.between(lo + 1, hi - 1);
+                const std::int64_t x = rng.between(lo + 1, hi - 1);
+                (void)b.add_point(at(x, y));
                 break;
             }
             case 4: {
-                Point from = at(inner(), inner());
+                Point from = inner();
                 for (int k = 0; k < 3; ++k) {
-                    const Point to = at(inner(), inner());
+                    const Point to = inner();
                     (void)b.add_segment(from, to);
                     from = to;
                 }

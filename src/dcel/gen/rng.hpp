@@ -1,6 +1,10 @@
 // The generators' own PRNG: xoshiro256** seeded through splitmix64. The
 // standard distributions are implementation-defined, so every draw here is
 // built from raw 64-bit words: the same seed gives the same graph everywhere.
+// That also needs one draw per statement: two draws in the arguments of one
+// call, or as the operands of one operator, come in an order the compiler
+// picks (gcc and clang differ), and so would the graph. The test gen.digests
+// compares the generated graphs with digests recorded from another compiler.
 #pragma once
 
 #include <cstdint>
