@@ -189,6 +189,8 @@ void add_diff_command(CLI::App& app, Action& action) {
         ->type_name("LIST");
     cmd->add_option("--exclude-coordinates", raw->exclude_coordinates, "Every coordinate class but these")
         ->type_name("LIST");
+    cmd->add_flag("--positional", options->schedule.positional,
+                  "Also send some graphs in the positional form [[[x, y], ...], [[u, v], ...]] (default: object form only)");
     add_answer_options(*cmd, answer);
     cmd->add_flag("--stream", options->stream,
                   "Start \"CMD --stream\" once; one graph per line in, one answer per line out");

@@ -82,6 +82,10 @@ CaseSpec case_spec(const Schedule& s, std::size_t i) {
     const std::uint64_t spelling_seed = mix(seed ^ 0x5be11ULL);
     spec.spelling = first_round || mix(spelling_seed) % 10 < 4 ? gen::Spelling::plain()
                                                                : gen::Spelling::random(spelling_seed, s.one_line);
+    // The positional form only when asked for: many programs read the object
+    // form alone, which is what the protocol promises by default. Dropped
+    // after the draw, so that every case is the same with and without it.
+    if (!s.positional) spec.spelling.positional = false;
     return spec;
 }
 

@@ -32,6 +32,7 @@ struct Schedule {
     std::vector<gen::Family> families;          // in schedule order; empty: all
     std::vector<gen::CoordinateClass> classes;  // allowed; empty: all
     bool one_line = false;                      // --stream: no newlines inside a graph
+    bool positional = false;                    // some graphs in the positional form (--positional)
     [[nodiscard]] std::vector<gen::Family> chosen_families() const;
     [[nodiscard]] bool allows(gen::CoordinateClass c) const;
 };

@@ -157,6 +157,7 @@ std::string schedule_arguments(const DiffOptions& options) {
     std::string a = " --seed " + std::to_string(s.seed);
     if (s.max_vertices != defaults.max_vertices) a += " --max-vertices " + std::to_string(s.max_vertices);
     if (s.large_vertices != defaults.large_vertices) a += " --large-vertices " + std::to_string(s.large_vertices);
+    if (s.positional) a += " --positional";
     if (!s.families.empty()) {
         a += " --families ";
         for (std::size_t i = 0; i < s.families.size(); ++i)
