@@ -48,7 +48,10 @@ def test_the_transcripts_on_the_page_print_what_they_show(tmp_path):
     assert unskipped != text
     page = tmp_path / "python.md"
     page.write_text(unskipped, encoding="utf-8")
-    env = {k: v for k, v in os.environ.items() if k != "DCEL_SVG_DIR"}  # the page shows the default folder
+    # The page shows a developer's terminal: the default SVG folder, and
+    # Hypothesis' default profile (with CI set it adds a @reproduce_failure
+    # line to every failure).
+    env = {k: v for k, v in os.environ.items() if k not in ("DCEL_SVG_DIR", "CI")}
     env["PATH"] = os.path.dirname(sys.executable) + os.pathsep + env.get("PATH", "")  # python3: this interpreter
     done = subprocess.run([sys.executable, os.path.join(SOURCE_DIR, "scripts", "check-docs"), "--dcel", cli_path(),
                            str(page)], env=env, capture_output=True, text=True, timeout=900)
