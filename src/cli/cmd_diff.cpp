@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "dcel/build.hpp"
 #include "dcel/check/counterexample_svg.hpp"
+#include "dcel/format.hpp"
 #include "diff_report.hpp"
 #include "diff_session.hpp"
 #include "option_values.hpp"
@@ -55,7 +56,11 @@ std::vector<T> parse_list(const std::string& option, const std::string& text, Pa
         const std::size_t end = std::min(text.find(',', begin), text.size());
         const std::string word = text.substr(begin, end - begin);
         const std::optional<T> v = parse(word);
-        if (!v) throw UsageError(option + ": unknown name \"" + word + "\"; the names are " + known);
+        if (!v) {
+            std::string message = option;
+            message.append(": unknown name ").append(dcel::quote_for_message(word)).append("; the names are ").append(known);
+            throw UsageError(message);
+        }
         if (std::find(out.begin(), out.end(), *v) == out.end()) out.push_back(*v);
         begin = end + 1;
     }
@@ -174,8 +179,8 @@ void add_diff_command(CLI::App& app, Action& action) {
     auto options = std::make_shared<DiffOptions>();
     auto raw = std::make_shared<RawOptions>();
     auto answer = std::make_shared<AnswerOptions>();
-    auto impl = cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")
-                    ->type_name("CMD");
+    auto* impl = cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")
+                     ->type_name("CMD");
     cmd->add_option("--cases", raw->cases, "Number of cases (default 200; unlimited with --time)")->type_name("N");
     cmd->add_option("--seed", raw->seed, "Seed of the case schedule (default 1)")->type_name("S");
     cmd->add_option("--time", raw->time, "Stop looking for failures after T seconds (implies --keep-going)")->type_name("T");

@@ -24,6 +24,9 @@ namespace dcel::detail {
 [[noreturn]] void contract_failed(const char* kind, const char* condition, const char* file, int line) noexcept;
 }  // namespace dcel::detail
 
+// Macros, not functions: the message names the caller's condition, file and
+// line, and the condition is not evaluated at all when the level is off.
+// NOLINTBEGIN(cppcoreguidelines-macro-usage)
 #if DCEL_CONTRACT_LEVEL >= 1
 #define DCEL_EXPECTS(condition) \
     ((condition) ? static_cast<void>(0) : ::dcel::detail::contract_failed("precondition", #condition, __FILE__, __LINE__))
@@ -37,3 +40,4 @@ namespace dcel::detail {
 #else
 #define DCEL_ASSERT(condition) static_cast<void>(0)
 #endif
+// NOLINTEND(cppcoreguidelines-macro-usage)

@@ -137,9 +137,9 @@ Report compare_under(const Dcel& reference, const Answer& a, const Conventions& 
 
 std::optional<std::string> convention_hint(const Dcel& reference, const Answer& a, const Conventions& c) {
     struct Toggle {
-        bool applies;
+        bool applies = false;
         Conventions conventions;
-        const char* note;
+        const char* note = "";
     };
     Conventions right = c, based = c, loose = c;
     right.face_on_right = !c.face_on_right;

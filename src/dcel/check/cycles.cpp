@@ -72,7 +72,7 @@ std::vector<Index> Reference::cycle_vertices(Index c) const {
 
 std::string AnswerCycles::label(std::size_t i) const {
     const std::string text = cycle_text((*cycles)[i]);
-    if (through.empty()) return "answer cycle " + std::to_string(numbering ? (*numbering)[i] : i) + " " + text;
+    if (through.empty()) return "answer cycle " + std::to_string(numbering != nullptr ? (*numbering)[i] : i) + " " + text;
     return "the answer's cycle through " + through[i].str() + " " + text;
 }
 
@@ -170,8 +170,8 @@ public:
     }
 
 private:
-    const HalfEdgeId* half_edges(std::size_t i) const { return hs_.all.data() + hs_.begin[i]; }
-    std::size_t length(std::size_t i) const { return hs_.begin[i + 1] - hs_.begin[i]; }
+    [[nodiscard]] const HalfEdgeId* half_edges(std::size_t i) const { return hs_.all.data() + hs_.begin[i]; }
+    [[nodiscard]] std::size_t length(std::size_t i) const { return hs_.begin[i + 1] - hs_.begin[i]; }
 
     // Cycles as they are: the first listing of a reference cycle matches it.
     void match_as_given() {
@@ -264,7 +264,7 @@ private:
         }
     }
 
-    std::string why_extra(std::size_t i) const {
+    [[nodiscard]] std::string why_extra(std::size_t i) const {
         if (m_.status[i] == CycleStatus::Duplicate) {
             return " repeats " + answer_.label(m_.first_match[m_.reference_cycle[i]]) +
                    ": the reference has this cycle once";

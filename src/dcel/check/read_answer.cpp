@@ -132,9 +132,11 @@ public:
     // GeoJSON: an object of one of the polygonal types (or a container of
     // them). `types` holds every object's "type" in document order, from a
     // first pass (a member may come before "type").
+    // Recursive over GeoJSON's nesting, which JsonReader's depth limit bounds.
+    // NOLINTNEXTLINE(misc-no-recursion)
     void geojson(JsonReader& r, const std::vector<std::string>& types, std::size_t& next_type) {
         if (next_type >= types.size()) r.fail_type("a GeoJSON object");
-        const std::string type = types[next_type++];
+        const std::string& type = types[next_type++];
         static constexpr std::array<std::string_view, 5> kKeys{"type", "coordinates", "geometry", "features", "geometries"};
         r.begin_object("a GeoJSON object");
         std::uint64_t seen = 0;
@@ -190,7 +192,7 @@ private:
             mixed(r);
         }
     }
-    [[noreturn]] static void mixed(JsonReader& r) {
+    [[noreturn]] static void mixed(const JsonReader& r) {
         r.fail(InputErrorKind::Shape,
                "rings given both as vertex ids and as coordinates; use one form for the whole answer");
     }
@@ -201,7 +203,9 @@ private:
 
 // The "type" of every object the GeoJSON walk will visit, in document order
 // (objects without one get ""). Only "geometry", "features" and "geometries"
-// are descended into, exactly as RegionReader::geojson does.
+// are descended into, exactly as RegionReader::geojson does; recursive like
+// it, within JsonReader's depth limit.
+// NOLINTNEXTLINE(misc-no-recursion)
 void collect_types(JsonReader& r, std::vector<std::string>& types) {
     const std::size_t mine = types.size();
     types.emplace_back();

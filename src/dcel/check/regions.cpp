@@ -172,7 +172,7 @@ private:
     };
 
     std::string ring_label(std::size_t p, std::size_t r) const {
-        const std::string what = rings_ ? "ring " + std::to_string(p) : "polygon " + std::to_string(p);
+        std::string what = rings_ ? "ring " + std::to_string(p) : "polygon " + std::to_string(p);
         if (rings_) return what;
         const std::size_t first = answer_.polygon_begin[p];
         return what + (r == first ? "'s shell" : "'s hole " + std::to_string(r - first - 1));

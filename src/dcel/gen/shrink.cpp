@@ -225,12 +225,14 @@ Index other_end(const GraphEdge& e, Index v) { return e.u.index() == v ? e.v.ind
 
 ShrinkCandidates::ShrinkCandidates(PlanarGraph g) : ShrinkCandidates(std::move(g), Position{}) {}
 
-ShrinkCandidates::ShrinkCandidates(PlanarGraph g, Position start) : g_(std::move(g)), fractions_(non_integers(g_)) {
-    chunk_ = g_.edges.size();
-    stage_ = start.stage == Stage::Done ? Stage::Empty : start.stage;
-    // Resuming past it, the one cheap candidate that drops every isolated
-    // vertex still comes first: removing edges leaves vertices bare.
-    isolated_first_ = stage_ > Stage::Isolated;
+// Resuming past it, the one cheap candidate that drops every isolated
+// vertex still comes first: removing edges leaves vertices bare.
+ShrinkCandidates::ShrinkCandidates(PlanarGraph g, Position start)
+    : g_(std::move(g)),
+      fractions_(non_integers(g_)),
+      stage_(start.stage == Stage::Done ? Stage::Empty : start.stage),
+      isolated_first_(stage_ > Stage::Isolated),
+      chunk_(g_.edges.size()) {
     if (stage_ == Stage::Edges && start.chunk != 0) chunk_ = std::min(start.chunk, chunk_);
 }
 

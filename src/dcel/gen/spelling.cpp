@@ -16,7 +16,7 @@ std::string chars(double v, std::chars_format f) {
     char buf[400];  // fixed notation of a double needs at most 1 + 309 + 1 + 767 digits only for values we never
                     // write that way: fixed is used for integral values below 2^1024, at most 310 characters
     const auto r = std::to_chars(buf, buf + sizeof buf, v, f);
-    return std::string(buf, r.ptr);
+    return {buf, r.ptr};
 }
 
 // "1.2345e+16" -> digits "12345", point after 1 digit, exponent 16.
