@@ -31,13 +31,16 @@
 #include "dcel/error.hpp"
 #include "dcel/io/dcel_json.hpp"
 #include "dcel/validate.hpp"
+#include "oracles/dump_judge.hpp"
 #include "support/dump_edits.hpp"
 #include "support/fuzz_check.hpp"
-#include "support/reference_dcel.hpp"
 #include "support/text_graph.hpp"
 
 namespace dcel::fuzz {
 namespace {
+
+using oracle::judge_dump;
+using oracle::Judgement;
 
 // The judge is O(V^2 + E^2) big-integer work; small graphs and a few
 // commands keep a run near a millisecond, and every corruption is local.

@@ -20,10 +20,10 @@
 #include "dcel/dump.hpp"
 #include "dcel/error.hpp"
 #include "dcel/validate.hpp"
-#include "support/boyer_myrvold.hpp"
-#include "support/brute_force.hpp"
+#include "oracles/boost_oracle.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/dump_judge.hpp"
 #include "support/fuzz_check.hpp"
-#include "support/reference_dcel.hpp"
 #include "support/text_graph.hpp"
 
 namespace dcel::fuzz {
@@ -35,17 +35,15 @@ namespace {
 constexpr std::size_t kMaxInput = 4096;
 constexpr GraphCaps kCaps{24, 40};
 
-std::vector<std::pair<Index, Index>> index_pairs(const PlanarGraph& g) {
-    std::vector<std::pair<Index, Index>> pairs;
-    for (const GraphEdge& e : g.edges) pairs.emplace_back(e.u.index(), e.v.index());
-    return pairs;
-}
+using oracle::Defect;
+using oracle::describe;
 
 void check_graph(const PlanarGraph& g) {
-    const Defects defects = find_defects(g);
+    const oracle::DefectKinds defects = oracle::find_defects(g, oracle::PairSearch::AllPairs).kinds();
+    const bool planar = oracle::boyer_myrvold(g).planar;
     // The oracles check each other: a graph that is not planar at all has
     // no drawing without a geometric defect among its edges.
-    if (!boost_is_planar(g.vertices.size(), index_pairs(g))) {
+    if (!planar) {
         FUZZ_CHECK(has(defects, Defect::Crossing) || has(defects, Defect::Touch) || has(defects, Defect::Overlap) ||
                        has(defects, Defect::DuplicatePoint) || has(defects, Defect::BadCoordinate),
                    "Boost calls the graph non-planar, brute force finds only " << describe(defects));
@@ -54,7 +52,7 @@ void check_graph(const PlanarGraph& g) {
     try {
         d = build(g);
     } catch (const InvalidInput& e) {
-        const Defect k = defect_of(e.kind());
+        const Defect k = oracle::defect_of(e.kind());
         FUZZ_CHECK(defects.any(), "build rejects a graph brute force finds valid: " << e.what());
         FUZZ_CHECK(k != Defect::Count && has(defects, k), "build reports " << to_string(e.kind())
                                                                            << " but brute force finds " << describe(defects)
@@ -62,11 +60,11 @@ void check_graph(const PlanarGraph& g) {
         return;
     }
     FUZZ_CHECK(defects.none(), "build accepts a graph with " << describe(defects));
-    FUZZ_CHECK(boost_is_planar(g.vertices.size(), index_pairs(g)), "build accepts a graph Boost calls non-planar");
+    FUZZ_CHECK(planar, "build accepts a graph Boost calls non-planar");
     const CheckResult v = validate(d);
     FUZZ_CHECK(!v, "validate rejects a built DCEL: [" << to_string(v->invariant) << "] " << v->message);
     const DcelDump dump = to_dump(d);
-    const Judgement j = judge_dump(dump);
+    const oracle::Judgement j = oracle::judge_dump(dump);
     FUZZ_CHECK(j.valid, "the reference disagrees with build: " << j.reason);
 
     const DcelDump unchecked = to_dump(build(g, BuildOptions{.check_crossings = false}));

@@ -27,12 +27,13 @@
 #include "dcel/error.hpp"
 #include "dcel/queries.hpp"
 #include "dcel/validate.hpp"
-#include "support/boost_oracle.hpp"
+#include "oracles/boost_oracle.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/exact.hpp"
+#include "oracles/union_find.hpp"
 #include "support/dcel_views.hpp"
-#include "support/exact_oracle.hpp"
 #include "support/fuzz_check.hpp"
 #include "support/generated_graph.hpp"
-#include "support/union_find.hpp"
 
 namespace dcel::fuzz {
 namespace {
@@ -52,27 +53,27 @@ std::string describe(const GeneratedGraph& c) {
 }
 
 void check_cycles(const Dcel& d, const PlanarGraph& g) {
-    const std::vector<props::VertexCycle> ours = props::dcel_cycles(d);
-    const std::vector<props::VertexCycle> boost = props::boost_face_cycles(g);
+    const std::vector<oracle::Cycle> ours = testing::dcel_cycles(d);
+    const std::vector<oracle::Cycle> boost = oracle::boost_face_cycles(g);
     FUZZ_CHECK(ours == boost,
                "the DCEL has " << ours.size() << " boundary cycles, Boost's traversal " << boost.size() << "; they differ");
-    std::vector<props::VertexCycle> queried;
+    std::vector<oracle::Cycle> queried;
     for (const std::vector<VertexId>& c : boundary_cycles(d)) {
-        props::VertexCycle ids;
+        oracle::Cycle ids;
         for (const VertexId v : c) ids.push_back(v.index());
-        queried.push_back(props::canonical_cycle(std::move(ids)));
+        queried.push_back(oracle::canonical(ids));
     }
     std::sort(queried.begin(), queried.end());
     FUZZ_CHECK(queried == ours, "boundary_cycles() differs from the cycles walked by next");
 
-    const props::BoyerMyrvoldAnswer bm = props::boyer_myrvold(g);
+    const oracle::BoyerMyrvoldAnswer bm = oracle::boyer_myrvold(g);
     FUZZ_CHECK(bm.planar, "Boyer-Myrvold calls a valid straight-line graph non-planar");
     FUZZ_CHECK(bm.faces == ours.size(),
                "Boyer-Myrvold's embedding has " << bm.faces << " faces, the DCEL " << ours.size() << " cycles");
 }
 
 void check_euler(const Dcel& d, const PlanarGraph& g) {
-    const std::size_t c = props::count_components_by_union_find(g);
+    const std::size_t c = oracle::count_components(g);
     const std::size_t v = d.num_vertices(), e = d.num_edges(), f = d.num_faces();
     FUZZ_CHECK(v + f == e + 1 + c, "V - E + F = " << v << " - " << e << " + " << f << ", but 1 + C = " << 1 + c);
     FUZZ_CHECK(count_components(d) == c, "count_components() " << count_components(d) << ", union-find " << c);
@@ -96,7 +97,7 @@ void check_faces_around(const Dcel& d) {
         }
         const Point centre = d.point(v);
         std::sort(ring.begin(), ring.end(), [&](HalfEdgeId a, HalfEdgeId b) {
-            return props::angle_order(centre, d.point(d.target(a)), d.point(d.target(b))) < 0;
+            return oracle::angle_order(centre, d.point(d.target(a)), d.point(d.target(b))) < 0;
         });
         const auto start = std::find(ring.begin(), ring.end(), d.out(v));
         FUZZ_CHECK(start != ring.end(), "out(" << v.str() << ") does not leave it");
@@ -122,34 +123,34 @@ void check_neighbours(const Dcel& d) {
     }
 }
 
-int sign_of(const props::Rational& r) { return r > 0 ? 1 : (r < 0 ? -1 : 0); }
+int sign_of(const oracle::Rational& r) { return r.sign(); }
 int sign_of(Sign s) { return s == Sign::Positive ? 1 : (s == Sign::Negative ? -1 : 0); }
 
 void check_areas(const Dcel& d) {
     for (Index i = 0; i < d.num_faces(); ++i) {
         const FaceId f(i);
         if (d.is_unbounded(f)) continue;
-        props::Rational twice = props::twice_area(props::cycle_points(d, d.outer(f)));
+        oracle::Rational twice = oracle::twice_area(testing::cycle_points(d, d.outer(f)));
         FUZZ_CHECK(sign_of(cycle_area(d, d.outer(f)).sign) == sign_of(twice),
                    "cycle_area sign of f" << i << "'s outer cycle");
         for (const HalfEdgeId h : d.inner(f)) {
-            const props::Rational hole = props::twice_area(props::cycle_points(d, h));
+            const oracle::Rational hole = oracle::twice_area(testing::cycle_points(d, h));
             FUZZ_CHECK(sign_of(cycle_area(d, h).sign) == sign_of(hole), "cycle_area sign of a hole of f" << i);
             twice += hole;
         }
-        const props::Rational exact = twice / 2;
+        const oracle::Rational exact = twice / 2;
         const Area got = face_area(d, f);
         FUZZ_CHECK(exact > 0 && got.sign == Sign::Positive,
                    "f" << i << " has area of sign " << sign_of(exact) << ", face_area says " << sign_of(got.sign));
-        FUZZ_CHECK(props::is_nearest_double(got.value, exact), "face_area(f" << i << ") = " << got.value
-                                                                             << " is not the exact area " << exact.str()
-                                                                             << " rounded to the nearest double");
+        FUZZ_CHECK(oracle::is_nearest_double(got.value, exact), "face_area(f" << i << ") = " << got.value
+                                                                              << " is not the exact area " << exact.str()
+                                                                              << " rounded to the nearest double");
     }
 }
 
 void check(const GeneratedGraph& c) {
     const PlanarGraph& g = c.graph;
-    const props::Defects defects = props::find_defects(g);
+    const oracle::Defects defects = oracle::find_defects(g, oracle::PairSearch::AllPairs);
     FUZZ_CHECK(defects.empty(), "the generator made an invalid graph: " << describe(c));
     Dcel d;
     try {

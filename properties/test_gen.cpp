@@ -11,8 +11,8 @@
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/generate.hpp"
 #include "dcel/queries.hpp"
-#include "support/exact_oracle.hpp"
-#include "support/union_find.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/union_find.hpp"
 
 namespace dcel::gen {
 namespace {
@@ -34,7 +34,7 @@ TEST(Generate, EveryFamilyIsValidAtEverySize) {
                     EXPECT_GT(g.vertices.size(), 0u);
                 }
                 EXPECT_EQ(find_problem(g), std::nullopt);
-                EXPECT_TRUE(props::find_defects(g).empty());
+                EXPECT_TRUE(oracle::find_defects(g).empty());
                 EXPECT_NO_THROW((void)build(g));
             }
         }
@@ -57,8 +57,7 @@ TEST(Generate, FamiliesReachWhatTheyPromise) {
         for (const GraphEdge& e : star.edges) ++degree[e.u.index()], ++degree[e.v.index()];
         for (const std::size_t d : degree) max_star_degree = std::max(max_star_degree, d);
 
-        max_components = std::max(max_components,
-                                  props::count_components_by_union_find(generate({Family::Components, seed, 100})));
+        max_components = std::max(max_components, oracle::count_components(generate({Family::Components, seed, 100})));
 
         const Dcel nested = build(generate({Family::NestedPolygons, seed, 100}));
         for (Index f = 1; f < nested.num_faces(); ++f) {
@@ -114,7 +113,7 @@ TEST(Plant, EachDefectIsRejectedWithItsKind) {
         for (std::uint64_t seed = 0; seed < 10; ++seed) {
             const std::optional<PlanarGraph> bad = plant(square(), defect, seed);
             ASSERT_TRUE(bad.has_value());
-            EXPECT_FALSE(props::find_defects(*bad).empty());
+            EXPECT_FALSE(oracle::find_defects(*bad).empty());
             try {
                 (void)build(*bad);
                 ADD_FAILURE() << "accepted a planted defect";
@@ -171,7 +170,7 @@ TEST(Shrink, CandidatesOfAValidGraphAreValid) {
         const PlanarGraph g = generate({f, 3, 30});
         for (const PlanarGraph& c : shrink_candidates(g)) {
             EXPECT_EQ(find_problem(c), std::nullopt) << family_name(f);
-            EXPECT_TRUE(props::find_defects(c).empty()) << family_name(f);
+            EXPECT_TRUE(oracle::find_defects(c).empty()) << family_name(f);
         }
     }
 }

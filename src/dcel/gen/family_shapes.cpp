@@ -6,6 +6,7 @@
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/families.hpp"
 #include "dcel/gen/graph_builder.hpp"
+#include "dcel/geometry/predicates.hpp"
 
 namespace dcel::gen::detail {
 
@@ -116,7 +117,7 @@ PlanarGraph components(Rng& rng, std::size_t n) {
             case 1: (void)b.add_segment(at(inner(ox), inner(oy)), at(inner(ox), inner(oy))); break;
             case 2: {
                 const Point p = at(inner(ox), inner(oy)), q = at(inner(ox), inner(oy)), s = at(inner(ox), inner(oy));
-                if (exact_orient(p, q, s) == Sign::Zero) break;
+                if (orient2d(p, q, s) == Sign::Zero) break;
                 (void)b.add_segment(p, q);
                 (void)b.add_segment(q, s);
                 (void)b.add_segment(s, p);

@@ -1,4 +1,4 @@
-// Union-find over vertex ids: the properties' own count of connected
+// Union-find over vertex ids: the oracles' own count of connected
 // components (isolated vertices included), independent of build().
 #pragma once
 
@@ -8,7 +8,7 @@
 
 #include "dcel/graph.hpp"
 
-namespace dcel::props {
+namespace dcel::oracle {
 
 class UnionFind {
 public:
@@ -32,11 +32,11 @@ private:
     return label;
 }
 
-[[nodiscard]] inline std::size_t count_components_by_union_find(const PlanarGraph& g) {
+[[nodiscard]] inline std::size_t count_components(const PlanarGraph& g) {
     const std::vector<Index> label = component_labels(g);
     std::size_t roots = 0;
     for (Index v = 0; v < label.size(); ++v) roots += label[v] == v;
     return roots;
 }
 
-}  // namespace dcel::props
+}  // namespace dcel::oracle
