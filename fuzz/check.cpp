@@ -42,8 +42,9 @@ namespace {
 using oracle::judge_dump;
 using oracle::Judgement;
 
-// The judge is O(V^2 + E^2) big-integer work; small graphs and a few
-// commands keep a run near a millisecond, and every corruption is local.
+// The judge checks all pairs of the dump's graph (O(V E + E^2) exact
+// orientations); small graphs and a few commands keep a run well under a
+// millisecond, and every corruption is local.
 constexpr std::size_t kMaxInput = 4096;
 constexpr GraphCaps kCaps{16, 24};
 constexpr std::size_t kMaxCommands = 8;

@@ -12,8 +12,12 @@
 //
 // Input: readable text, see support/text_graph.hpp, e.g.
 //   points 0 0, 4 4, 0 4, 4 0  edges 0 1, 2 3
+// The custom mutator (support/graph_mutator.hpp) moves vertices onto or
+// within ulps of lines and other vertices, adds and removes edges and
+// vertices, and plants crossings, touches, overlaps and duplicates.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
 #include "dcel/build.hpp"
@@ -24,16 +28,18 @@
 #include "oracles/brute_force.hpp"
 #include "oracles/dump_judge.hpp"
 #include "support/fuzz_check.hpp"
+#include "support/graph_fuzzer.hpp"
 #include "support/text_graph.hpp"
 
 namespace dcel::fuzz {
 namespace {
 
-// The brute force is O(V^2 + V*E + E^2) big-integer operations and the
-// reference DCEL similar; these caps keep a run around a millisecond. Enough
-// for K5 and K3,3 (Boost) and for every local configuration of a few edges.
-constexpr std::size_t kMaxInput = 4096;
-constexpr GraphCaps kCaps{24, 40};
+// The brute force compares all pairs (O(V E + E^2) exact orientations) and
+// the reference DCEL sorts and walks; these caps keep a run near a
+// millisecond under the sanitizers. Enough for K5 and K3,3 (Boost) and for
+// every local configuration of a few edges.
+constexpr std::size_t kMaxInput = 16 * 1024;
+constexpr GraphCaps kCaps{48, 96};
 
 using oracle::Defect;
 using oracle::describe;
@@ -83,6 +89,13 @@ void check_unchecked_build(const PlanarGraph& g) {
     }
 }
 
+std::optional<PlanarGraph> any_graph(std::string_view text) {
+    TokenReader in(text);
+    return decode_graph(in, kCaps);
+}
+
+constexpr GraphFuzzing kFuzzing{any_graph, Validity::Break, {kCaps.vertices, kCaps.edges}};
+
 }  // namespace
 }  // namespace dcel::fuzz
 
@@ -94,3 +107,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     dcel::fuzz::check_unchecked_build(g);
     return 0;
 }
+
+DCEL_GRAPH_FUZZER_HOOKS(dcel::fuzz::kFuzzing)

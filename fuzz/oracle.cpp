@@ -1,25 +1,36 @@
-// oracle: valid graphs of every generator family through build(), compared
-// with Boost and with exact rational arithmetic.
+// oracle: valid graphs through build(), compared with Boost, the reference
+// DCEL and the exact oracles (tests/oracles/, none of which uses
+// src/dcel/geometry).
 //
-// Compares the DCEL's boundary cycles with the faces of Boost's
-// planar_face_traversal over a rotation system sorted by the oracles' own
-// exact comparator (tests/support/boost_oracle.hpp: it never uses
-// src/dcel/geometry). Boost skips isolated vertices and reports each
-// component's outer walk as a face of its own, which is exactly a hole
-// cycle, so cycles are compared, not faces. Also: Boyer-Myrvold calls the
-// graph planar and its embedding has as many faces as the DCEL has cycles;
-// V - E + F = 1 + C with C by union-find; validate() passes; the generated
-// graph is valid by brute force (exact, all pairs). The queries are checked
-// against the same oracles: boundary_cycles(), count_components(),
-// faces_around() against the exact angular order, neighbours() against a
-// scan of all half-edges, cycle_area() signs and face_area() values against
-// rational areas (face_area promises the exact area rounded once).
+// Compares the DCEL's faces with the reference DCEL's (every cycle, every
+// hole and isolated vertex in its face), and its boundary cycles with the
+// faces of Boost's planar_face_traversal over a rotation system sorted by
+// the oracles' own exact comparator (Boost skips isolated vertices and
+// reports each component's outer walk as a face of its own, which is
+// exactly a hole cycle, so cycles are compared, not faces). Also: on small
+// graphs, Boyer-Myrvold calls the graph planar and its embedding has as
+// many faces as the DCEL has cycles; V - E + F = 1 + C with C by
+// union-find; validate() passes; the graph is valid by brute force (exact;
+// pairs found by bounding boxes, and on small graphs all pairs, which must
+// agree). The
+// queries are checked against the same oracles: boundary_cycles(),
+// count_components(), faces_around() against the exact angular order,
+// neighbours() against a scan of all half-edges, cycle_area() signs and
+// face_area() values against exact areas (face_area promises the exact
+// area rounded once).
 //
-// Input: readable text, see support/generated_graph.hpp, e.g.
+// Input: readable text (support/graph_input.hpp): a recipe naming a
+// generated graph, e.g.
 //   triangulation seed 7 vertices 30 mirror scale -3 drop 4
+// or a graph point by point, which is what the custom mutator writes
+// (support/graph_mutator.hpp: near-degenerate moves, edges added and
+// removed, components copied into faces, exact transforms), e.g.
+//   points 0 0, 4 0, 0 4, 1 1  edges 0 1, 1 2, 2 0
+// A graph given point by point that is not valid is skipped.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -30,26 +41,42 @@
 #include "oracles/boost_oracle.hpp"
 #include "oracles/brute_force.hpp"
 #include "oracles/exact.hpp"
+#include "oracles/reference_dcel.hpp"
 #include "oracles/union_find.hpp"
 #include "support/dcel_views.hpp"
+#include "support/face_shapes.hpp"
 #include "support/fuzz_check.hpp"
-#include "support/generated_graph.hpp"
+#include "support/graph_fuzzer.hpp"
+#include "support/graph_input.hpp"
 
 namespace dcel::fuzz {
 namespace {
 
-// Boost, the rational angle sort and the all-pairs check are superlinear;
-// 40 vertices (a family may add a few) keep a run to a few milliseconds
-// while leaving room for holes in holes, stars and long chains. The text
-// cap bounds the number of transforms and deletions the same way.
-constexpr std::size_t kMaxInput = 1024;
-constexpr std::size_t kMaxVertices = 40;
-constexpr std::size_t kMaxSteps = 32;
+// A few hundred vertices: the oracles are near E log E (the brute force's
+// pairs of overlapping boxes, the angle sorts, the traversal), so a run
+// stays within milliseconds under the sanitizers; a graph of that size
+// takes some 10 KB of text. The quadratic all-pairs brute force and
+// Boyer-Myrvold, which on large graphs cost more than everything else,
+// check small graphs only.
+constexpr std::size_t kMaxInput = 32 * 1024;
+constexpr GraphLimits kLimits{300, 900};
+constexpr std::size_t kSmallEdges = 24;
 
-std::string describe(const GeneratedGraph& c) {
-    return std::string(gen::family_name(c.params.family)) + " seed " + std::to_string(c.params.seed) + " vertices " +
-           std::to_string(c.params.vertices) + " (" + std::to_string(c.graph.vertices.size()) + " vertices, " +
-           std::to_string(c.graph.edges.size()) + " edges after " + std::to_string(c.transforms) + " transforms)";
+void check_validity(const GraphInput& in, const oracle::Defects& defects) {
+    const PlanarGraph& g = in.graph;
+    if (g.edges.size() <= kSmallEdges) {
+        FUZZ_CHECK(oracle::find_defects(g, oracle::PairSearch::AllPairs) == defects,
+                   "the brute force's bounding-box pairs and all pairs disagree on " << describe(in));
+    }
+    FUZZ_CHECK(defects.empty(),
+               "the generator made an invalid graph: " << describe(in) << ": " << oracle::describe(defects.kinds()));
+}
+
+void check_faces(const Dcel& d, const PlanarGraph& g) {
+    const std::vector<oracle::FaceShape> ours = testing::face_shapes(d);
+    const std::vector<oracle::FaceShape> reference = oracle::reference_faces(g);
+    FUZZ_CHECK(ours == reference,
+               "the DCEL has " << ours.size() << " faces, the reference DCEL " << reference.size() << "; they differ");
 }
 
 void check_cycles(const Dcel& d, const PlanarGraph& g) {
@@ -66,6 +93,7 @@ void check_cycles(const Dcel& d, const PlanarGraph& g) {
     std::sort(queried.begin(), queried.end());
     FUZZ_CHECK(queried == ours, "boundary_cycles() differs from the cycles walked by next");
 
+    if (g.edges.size() > kSmallEdges) return;
     const oracle::BoyerMyrvoldAnswer bm = oracle::boyer_myrvold(g);
     FUZZ_CHECK(bm.planar, "Boyer-Myrvold calls a valid straight-line graph non-planar");
     FUZZ_CHECK(bm.faces == ours.size(),
@@ -148,31 +176,48 @@ void check_areas(const Dcel& d) {
     }
 }
 
-void check(const GeneratedGraph& c) {
-    const PlanarGraph& g = c.graph;
-    const oracle::Defects defects = oracle::find_defects(g, oracle::PairSearch::AllPairs);
-    FUZZ_CHECK(defects.empty(), "the generator made an invalid graph: " << describe(c));
+// Skips (false) a graph given point by point that is not valid; a
+// generated one must be.
+bool check(const GraphInput& in) {
+    const PlanarGraph& g = in.graph;
+    const oracle::Defects defects = oracle::find_defects(g);
+    if (!in.generated && !defects.empty()) return false;
+    check_validity(in, defects);
     Dcel d;
     try {
         d = build(g);
     } catch (const InvalidInput& e) {
-        FUZZ_CHECK(false, "build rejects a valid generated graph, " << describe(c) << ": " << e.what());
+        FUZZ_CHECK(false, "build rejects a valid graph, " << describe(in) << ": " << e.what());
     }
     const CheckResult v = validate(d);
     FUZZ_CHECK(!v, "validate rejects a built DCEL: [" << to_string(v->invariant) << "] " << v->message);
+    check_faces(d, g);
     check_cycles(d, g);
     check_euler(d, g);
     check_faces_around(d);
     check_neighbours(d);
     check_areas(d);
+    return true;
 }
+
+constexpr GraphInputCaps kCaps{kLimits.vertices, 32, {kLimits.vertices, kLimits.edges}};
+
+// The mutator's view of an input: a valid graph, or nothing.
+std::optional<PlanarGraph> valid_graph(std::string_view text) {
+    GraphInput in = decode_graph_input(text, kCaps);
+    if (!is_valid(in.graph)) return std::nullopt;
+    return std::move(in.graph);
+}
+
+constexpr GraphFuzzing kFuzzing{valid_graph, Validity::Keep, kLimits};
 
 }  // namespace
 }  // namespace dcel::fuzz
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    if (size > dcel::fuzz::kMaxInput) return -1;
-    dcel::fuzz::TokenReader in(std::string_view(reinterpret_cast<const char*>(data), size));
-    dcel::fuzz::check(dcel::fuzz::decode_generated_graph(in, dcel::fuzz::kMaxVertices, dcel::fuzz::kMaxSteps));
-    return 0;
+    using namespace dcel::fuzz;
+    if (size > kMaxInput) return -1;
+    return check(decode_graph_input(as_text(data, size), kCaps)) ? 0 : -1;  // -1: not added to the corpus
 }
+
+DCEL_GRAPH_FUZZER_HOOKS(dcel::fuzz::kFuzzing)

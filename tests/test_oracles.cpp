@@ -38,7 +38,9 @@ double spread_double(std::mt19937_64& rng, int kind) {
         case 2: return small * 0x1p-1074;
         case 3: return small * (DBL_MAX / 4);
         case 4: return std::ldexp(small + 0.5, static_cast<int>(rng() % 200) - 100);
-        default: return (rng() & 1U) != 0 ? -0.0 : 0.0;
+        case 5: return (rng() & 1U) != 0 ? -0.0 : 0.0;
+        case 6: return small * 0x1p60;  // beside the next kind: spreads of about 90 bits
+        default: return 0.5 + small * 0x1p-30;
     }
 }
 
@@ -47,9 +49,9 @@ TEST(ExactOracle, CrossSignAgreesWithRationalsOnBothPaths) {
     int zeros = 0;
     for (int i = 0; i < 20000; ++i) {
         // Half the cases draw every coordinate from one kind (mostly the
-        // 128-bit path), half mix kinds (mostly the GMP path).
-        const int shared = static_cast<int>(rng() % 6);
-        auto draw = [&] { return spread_double(rng, i % 2 == 0 ? shared : static_cast<int>(rng() % 6)); };
+        // 64-bit path), half mix kinds (the 128-bit and GMP paths).
+        const int shared = static_cast<int>(rng() % 8);
+        auto draw = [&] { return spread_double(rng, i % 2 == 0 ? shared : static_cast<int>(rng() % 8)); };
         Point p[4];
         for (Point& x : p) x = {draw(), draw()};
         const int want = rational_cross(p[0], p[1], p[2], p[3]);
@@ -57,6 +59,34 @@ TEST(ExactOracle, CrossSignAgreesWithRationalsOnBothPaths) {
         ASSERT_EQ(cross_sign(p[0], p[1], p[2], p[3]), want) << i;
     }
     EXPECT_GT(zeros, 500);
+}
+
+TEST(ExactOracle, PointSetsAgreeWithPointByPoint) {
+    // Point sets of one kind (stored as integers) and of mixed kinds (the
+    // per-call route): orientation, angle order and meeting by index must be
+    // the free functions' answers.
+    std::mt19937_64 rng(43);
+    for (int round = 0; round < 400; ++round) {
+        const int kind = static_cast<int>(rng() % 8);
+        std::vector<Point> pts(8);
+        for (Point& p : pts) {
+            const int k = round % 2 == 0 ? kind : static_cast<int>(rng() % 8);
+            p = {spread_double(rng, k), spread_double(rng, k)};
+        }
+        const ExactPoints set(pts);
+        for (int t = 0; t < 50; ++t) {
+            const auto a = static_cast<Index>(rng() % 8), b = static_cast<Index>(rng() % 8);
+            const auto c = static_cast<Index>(rng() % 8), d = static_cast<Index>(rng() % 8);
+            ASSERT_EQ(set.orientation(a, b, c), orientation(pts[a], pts[b], pts[c])) << round;
+            ASSERT_EQ(set.strictly_on_segment(a, b, c), strictly_on_segment(pts[a], pts[b], pts[c])) << round;
+            if (!(pts[a] == pts[b]) && !(pts[a] == pts[c])) {
+                ASSERT_EQ(set.angle_order(a, b, c), angle_order(pts[a], pts[b], pts[c])) << round;
+            }
+            if (!(pts[a] == pts[b]) && !(pts[c] == pts[d])) {
+                ASSERT_EQ(set.meeting(a, b, c, d), meeting(pts[a], pts[b], pts[c], pts[d])) << round;
+            }
+        }
+    }
 }
 
 TEST(ExactOracle, HandCheckedSigns) {
@@ -67,9 +97,9 @@ TEST(ExactOracle, HandCheckedSigns) {
     // 2^-1074 against 2^1000: 2074 bits apart, the GMP path.
     EXPECT_EQ(orientation({0, 0}, {0x1p-1074, 0}, {0x1p1000, 0x1p-1074}), 1);
     EXPECT_EQ(orientation({-DBL_MAX, -DBL_MAX}, {DBL_MAX, DBL_MAX}, {0, 0x1p-1074}), 1);
-    // At the edge of the 128-bit path: 62-bit integers (differences of 63
-    // bits), and one more bit, which must take the GMP path.
-    for (const double big : {0x1.fffffffffffffp61, 0x1.fffffffffffffp62}) {
+    // At the edges of the paths: 62 bits (differences of 63) and one more,
+    // 125 bits (differences of 126) and one more.
+    for (const double big : {0x1.fffffffffffffp61, 0x1.fffffffffffffp62, 0x1.fffffffffffffp124, 0x1.fffffffffffffp125}) {
         // (2 big, 0) x (0, 1): positive, though 2 big wraps to a negative
         // 64-bit integer past the edge.
         EXPECT_EQ(cross_sign({-big, 0}, {big, 0}, {0, 0}, {0, 1}), 1) << big;

@@ -16,7 +16,9 @@ namespace {
 // vecS vertex storage gives Boost its vertex index for free; the edge
 // index (which the traversal needs and Boost does not fill) is ours.
 using EdgeIndex = boost::property<boost::edge_index_t, int>;
-using BoostGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property, EdgeIndex>;
+// (The edge list in a vector too: fewer allocations than the default list.)
+using BoostGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property, EdgeIndex,
+                                         boost::no_property, boost::vecS>;
 using BoostEdge = boost::graph_traits<BoostGraph>::edge_descriptor;
 using Embedding = std::vector<std::vector<BoostEdge>>;  // per vertex, its edges in clockwise order
 using EmbeddingMap =
@@ -71,17 +73,18 @@ struct FaceCounter : boost::planar_face_traversal_visitor {
 std::vector<Cycle> boost_face_cycles(const PlanarGraph& g) {
     BoostGraph b = to_boost(g.vertices.size(), edge_pairs(g));
     Embedding embedding(g.vertices.size());
+    const ExactPoints geometry(g.vertices);
     for (std::size_t v = 0; v < g.vertices.size(); ++v) {
-        const Point centre = g.vertices[v];
         auto other = [&](const BoostEdge& e) {
             const auto s = boost::source(e, b), t = boost::target(e, b);
-            return g.vertices[s == v ? t : s];
+            return static_cast<Index>(s == v ? t : s);
         };
         auto [it, end] = boost::out_edges(v, b);
         std::vector<BoostEdge> ring(it, end);
         // Clockwise: the reverse of the counterclockwise angle order.
-        std::sort(ring.begin(), ring.end(),
-                  [&](const BoostEdge& x, const BoostEdge& y) { return angle_order(centre, other(x), other(y)) > 0; });
+        std::sort(ring.begin(), ring.end(), [&](const BoostEdge& x, const BoostEdge& y) {
+            return geometry.angle_order(static_cast<Index>(v), other(x), other(y)) > 0;
+        });
         embedding[v] = std::move(ring);
     }
     FaceWalks walks;

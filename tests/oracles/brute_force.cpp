@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <tuple>
 
 namespace dcel::oracle {
@@ -13,27 +12,40 @@ constexpr const char* kNames[] = {"bad-index",      "bad-coordinate", "duplicate
 
 struct Segment {
     Index edge;
+    Index u, v;  // the end vertices
     Point a, b;
     double x0, x1, y0, y1;  // bounding box
 };
 
 bool boxes_meet(const Segment& s, const Segment& t) { return s.x0 <= t.x1 && t.x0 <= s.x1 && s.y0 <= t.y1 && t.y0 <= s.y1; }
 
-void check_pair(const Segment& s, const Segment& t, Defects& out) {
-    const Meeting m = meeting(s.a, s.b, t.a, t.b);
+// Two segments with one end vertex w in common, w-x and w-y, meet only at
+// w unless x, w and y are collinear: then one orientation settles most
+// pairs of a graph's neighbouring edges.
+bool apart_but_for_shared_end(const ExactPoints& geometry, const Segment& s, const Segment& t) {
+    const bool shares_u = s.u == t.u || s.u == t.v, shares_v = s.v == t.u || s.v == t.v;
+    if (shares_u == shares_v) return false;  // none, or the same two vertices
+    const Index w = shares_u ? s.u : s.v, x = shares_u ? s.v : s.u;
+    const Index y = t.u == w ? t.v : t.u;
+    return geometry.orientation(w, x, y) != 0;
+}
+
+void check_pair(const ExactPoints& geometry, const Segment& s, const Segment& t, Defects& out) {
+    if (apart_but_for_shared_end(geometry, s, t)) return;
+    const Meeting m = geometry.meeting(s.u, s.v, t.u, t.v);
     if (m != Meeting::None && m != Meeting::SharedEndpoint) {
         out.edge_pairs.push_back({std::min(s.edge, t.edge), std::max(s.edge, t.edge), m});
     }
 }
 
 // Every pair of segments, every vertex against every segment.
-void all_pairs(const std::vector<Segment>& segments, const std::vector<Index>& vertices, const PlanarGraph& g,
+void all_pairs(const ExactPoints& geometry, const std::vector<Segment>& segments, const std::vector<Index>& vertices,
                Defects& out) {
     for (std::size_t i = 0; i < segments.size(); ++i) {
-        for (std::size_t j = i + 1; j < segments.size(); ++j) check_pair(segments[i], segments[j], out);
+        const Segment& s = segments[i];
+        for (std::size_t j = i + 1; j < segments.size(); ++j) check_pair(geometry, s, segments[j], out);
         for (const Index v : vertices) {
-            if (strictly_on_segment(segments[i].a, segments[i].b, g.vertices[v]))
-                out.vertex_in_edge.emplace_back(v, segments[i].edge);
+            if (geometry.strictly_on_segment(s.u, s.v, v)) out.vertex_in_edge.emplace_back(v, s.edge);
         }
     }
 }
@@ -41,11 +53,12 @@ void all_pairs(const std::vector<Segment>& segments, const std::vector<Index>& v
 // Only the pairs whose bounding boxes meet: segments in order of their left
 // ends, each against those that start before it ends; vertices in order of
 // x, each segment against those within its x range.
-void box_pairs(std::vector<Segment> segments, std::vector<Index> vertices, const PlanarGraph& g, Defects& out) {
+void box_pairs(const ExactPoints& geometry, std::vector<Segment> segments, std::vector<Index> vertices, const PlanarGraph& g,
+               Defects& out) {
     std::sort(segments.begin(), segments.end(), [](const Segment& s, const Segment& t) { return s.x0 < t.x0; });
     for (std::size_t i = 0; i < segments.size(); ++i) {
         for (std::size_t j = i + 1; j < segments.size() && segments[j].x0 <= segments[i].x1; ++j) {
-            if (boxes_meet(segments[i], segments[j])) check_pair(segments[i], segments[j], out);
+            if (boxes_meet(segments[i], segments[j])) check_pair(geometry, segments[i], segments[j], out);
         }
     }
     auto x_of = [&](Index v) { return g.vertices[v].x; };
@@ -54,9 +67,29 @@ void box_pairs(std::vector<Segment> segments, std::vector<Index> vertices, const
         auto it = std::lower_bound(vertices.begin(), vertices.end(), s.x0, [&](Index v, double x) { return x_of(v) < x; });
         for (; it != vertices.end() && x_of(*it) <= s.x1; ++it) {
             const Point p = g.vertices[*it];
-            if (s.y0 <= p.y && p.y <= s.y1 && strictly_on_segment(s.a, s.b, p)) out.vertex_in_edge.emplace_back(*it, s.edge);
+            if (s.y0 <= p.y && p.y <= s.y1 && geometry.strictly_on_segment(s.u, s.v, *it)) {
+                out.vertex_in_edge.emplace_back(*it, s.edge);
+            }
         }
     }
+}
+
+// Of ids keyed by value: each id whose key an earlier id has, paired with
+// the first id of that key, in order of the later id. (Sorting, not a map:
+// fewer allocations.)
+template <class Key>
+std::vector<std::pair<Index, Index>> repeats(std::vector<std::pair<Key, Index>> keyed) {
+    std::sort(keyed.begin(), keyed.end());  // by key (-0.0 and 0.0 alike), then by id
+    std::vector<std::pair<Index, Index>> out;
+    for (std::size_t i = 1, first = 0; i < keyed.size(); ++i) {
+        if (keyed[i].first == keyed[first].first) {
+            out.emplace_back(keyed[first].second, keyed[i].second);
+        } else {
+            first = i;
+        }
+    }
+    std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+    return out;
 }
 
 }  // namespace
@@ -87,8 +120,8 @@ Defects find_defects(const PlanarGraph& g, PairSearch search) {
     Defects out;
     const std::size_t n = g.vertices.size();
     std::vector<char> finite(n, 1);
-    std::vector<Index> usable;                      // vertices with finite coordinates
-    std::map<std::pair<double, double>, Index> at;  // -0.0 == 0.0, as the map compares with <
+    std::vector<Index> usable;  // vertices with finite coordinates
+    std::vector<std::pair<std::pair<double, double>, Index>> at;
     for (Index v = 0; v < n; ++v) {
         const Point p = g.vertices[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
@@ -97,33 +130,29 @@ Defects find_defects(const PlanarGraph& g, PairSearch search) {
             continue;
         }
         usable.push_back(v);
-        const auto [it, fresh] = at.emplace(std::pair{p.x, p.y}, v);
-        if (!fresh) out.duplicate_points.emplace_back(it->second, v);
+        at.push_back({{p.x, p.y}, v});
     }
+    out.duplicate_points = repeats(std::move(at));
 
-    std::map<std::pair<Index, Index>, Index> joined;
+    std::vector<std::pair<std::pair<Index, Index>, Index>> joined;
     std::vector<Segment> segments;
     for (Index k = 0; k < g.edges.size(); ++k) {
         const Index u = g.edges[k].u.index(), v = g.edges[k].v.index();
-        if (u == v) {
-            out.self_loops.push_back(k);  // whether or not the index exists
-            continue;
-        }
-        if (u >= n || v >= n) {
-            out.bad_indexes.push_back(k);
-            continue;
-        }
-        const auto [it, fresh] = joined.emplace(std::pair{std::min(u, v), std::max(u, v)}, k);
-        if (!fresh) out.duplicate_edges.emplace_back(it->second, k);
+        if (u == v) out.self_loops.push_back(k);  // whether or not the index exists
+        if (u >= n || v >= n) out.bad_indexes.push_back(k);
+        if (u == v || u >= n || v >= n) continue;
+        joined.push_back({{std::min(u, v), std::max(u, v)}, k});
         const Point a = g.vertices[u], b = g.vertices[v];
         if (finite[u] == 0 || finite[v] == 0 || a == b) continue;
-        segments.push_back({k, a, b, std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)});
+        segments.push_back({k, u, v, a, b, std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)});
     }
 
+    out.duplicate_edges = repeats(std::move(joined));
+    const ExactPoints geometry(g.vertices);
     if (search == PairSearch::AllPairs) {
-        all_pairs(segments, usable, g, out);
+        all_pairs(geometry, segments, usable, out);
     } else {
-        box_pairs(std::move(segments), std::move(usable), g, out);
+        box_pairs(geometry, std::move(segments), std::move(usable), g, out);
     }
     std::sort(out.edge_pairs.begin(), out.edge_pairs.end(), [](const Defects::EdgePair& p, const Defects::EdgePair& q) {
         return std::tie(p.e1, p.e2) < std::tie(q.e1, q.e2);

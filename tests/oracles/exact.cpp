@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <limits>
 
+#include <gmp.h>
+
 namespace dcel::oracle {
 namespace {
 
@@ -54,6 +56,14 @@ public:
     [[nodiscard]] std::int64_t small(const Dyadic& d) const {
         return d.mantissa == 0 ? 0 : d.mantissa * (std::int64_t{1} << static_cast<unsigned>(d.exponent - low_));
     }
+    // Only when bits() <= 125.
+    [[nodiscard]] Wide wide(const Dyadic& d) const {
+        return d.mantissa == 0 ? 0 : static_cast<Wide>(d.mantissa) * (Wide{1} << static_cast<unsigned>(d.exponent - low_));
+    }
+    void to_gmp(const Dyadic& d, mpz_t out) const {
+        mpz_set_si(out, d.mantissa);
+        if (d.mantissa != 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(d.exponent - low_));
+    }
     [[nodiscard]] BigInt big(const Dyadic& d) const {
         BigInt v = d.mantissa;
         if (d.mantissa != 0) v <<= static_cast<unsigned>(d.exponent - low_);
@@ -82,23 +92,102 @@ Rational exact(double v) { return Rational(v); }
 
 int sign_of(const Rational& r) { return r.sign(); }
 
+namespace {
+
+// The three widths of the exact cross product, by how many bits the scaled
+// operands need. Each computes the sign of (v0 - v1)(v2 - v3) - (v4 - v5)(v6 - v7).
+
+// Up to 62 bits: differences below 2^63, products below 2^126, their
+// difference below 2^127.
+int cross_sign_64(const CommonScale& scale, const Dyadic (&v)[8]) {
+    std::int64_t n[8];
+    for (int i = 0; i < 8; ++i) n[i] = scale.small(v[i]);
+    const Wide det = static_cast<Wide>(n[0] - n[1]) * (n[2] - n[3]) - static_cast<Wide>(n[4] - n[5]) * (n[6] - n[7]);
+    return sign_of(det);
+}
+
+// A 256-bit magnitude, for products of two 128-bit ones.
+struct U256 {
+    UWide hi, lo;
+};
+
+U256 multiply(UWide a, UWide b) {
+    const auto a0 = static_cast<std::uint64_t>(a), a1 = static_cast<std::uint64_t>(a >> 64U);
+    const auto b0 = static_cast<std::uint64_t>(b), b1 = static_cast<std::uint64_t>(b >> 64U);
+    const UWide p00 = static_cast<UWide>(a0) * b0, p01 = static_cast<UWide>(a0) * b1;
+    const UWide p10 = static_cast<UWide>(a1) * b0, p11 = static_cast<UWide>(a1) * b1;
+    // The middle 64-bit column with its carries: below 3 * 2^64.
+    const UWide mid = (p00 >> 64U) + static_cast<std::uint64_t>(p01) + static_cast<std::uint64_t>(p10);
+    return {p11 + (p01 >> 64U) + (p10 >> 64U) + (mid >> 64U), (mid << 64U) | static_cast<std::uint64_t>(p00)};
+}
+
+int compare(const U256& a, const U256& b) {
+    if (a.hi != b.hi) return a.hi < b.hi ? -1 : 1;
+    return a.lo < b.lo ? -1 : (a.lo > b.lo ? 1 : 0);
+}
+
+// A signed product x * y as a sign and a magnitude (|x|, |y| < 2^127).
+struct Product {
+    int sign;
+    U256 magnitude;
+};
+Product product(Wide x, Wide y) {
+    const auto mx = static_cast<UWide>(x < 0 ? -x : x), my = static_cast<UWide>(y < 0 ? -y : y);
+    return {sign_of(x) * sign_of(y), multiply(mx, my)};
+}
+
+// Up to 125 bits: differences below 2^126 fit a 128-bit integer, and the
+// sign of p - q is a comparison of two 256-bit products.
+int cross_sign_128(const CommonScale& scale, const Dyadic (&v)[8]) {
+    Wide n[8];
+    for (int i = 0; i < 8; ++i) n[i] = scale.wide(v[i]);
+    const Product p = product(n[0] - n[1], n[2] - n[3]);
+    const Product q = product(n[4] - n[5], n[6] - n[7]);
+    if (p.sign != q.sign) return p.sign > q.sign ? 1 : -1;
+    return p.sign * compare(p.magnitude, q.magnitude);
+}
+
+// Any width: GMP integers, in scratch variables that keep their limbs
+// between calls (no allocation once they have grown).
+int cross_sign_gmp(const CommonScale& scale, const Dyadic (&v)[8]) {
+    struct Scratch {
+        mpz_t n[8], p, q;
+        Scratch() {
+            for (mpz_t& x : n) mpz_init(x);
+            mpz_init(p);
+            mpz_init(q);
+        }
+        ~Scratch() {
+            for (mpz_t& x : n) mpz_clear(x);
+            mpz_clear(p);
+            mpz_clear(q);
+        }
+        Scratch(const Scratch&) = delete;
+        Scratch& operator=(const Scratch&) = delete;
+    };
+    thread_local Scratch s;
+    for (int i = 0; i < 8; ++i) scale.to_gmp(v[i], s.n[i]);
+    mpz_sub(s.p, s.n[0], s.n[1]);
+    mpz_sub(s.q, s.n[2], s.n[3]);
+    mpz_mul(s.p, s.p, s.q);
+    mpz_sub(s.q, s.n[4], s.n[5]);
+    mpz_sub(s.n[0], s.n[6], s.n[7]);
+    mpz_mul(s.q, s.q, s.n[0]);
+    const int c = mpz_cmp(s.p, s.q);
+    return c > 0 ? 1 : (c < 0 ? -1 : 0);
+}
+
+}  // namespace
+
 int cross_sign(Point p1, Point q1, Point p2, Point q2) {
     // (q1 - p1) x (q2 - p2) = (v0 - v1)(v2 - v3) - (v4 - v5)(v6 - v7)
     const Dyadic v[8] = {dyadic(q1.x), dyadic(p1.x), dyadic(q2.y), dyadic(p2.y),
                          dyadic(q1.y), dyadic(p1.y), dyadic(q2.x), dyadic(p2.x)};
     CommonScale scale;
     for (const Dyadic& d : v) scale.add(d);
-    if (scale.bits() <= 62) {
-        // Differences below 2^63, products below 2^126, their difference below 2^127.
-        std::int64_t n[8];
-        for (int i = 0; i < 8; ++i) n[i] = scale.small(v[i]);
-        const Wide det = static_cast<Wide>(n[0] - n[1]) * (n[2] - n[3]) - static_cast<Wide>(n[4] - n[5]) * (n[6] - n[7]);
-        return sign_of(det);
-    }
-    BigInt n[8];
-    for (int i = 0; i < 8; ++i) n[i] = scale.big(v[i]);
-    const BigInt det = (n[0] - n[1]) * (n[2] - n[3]) - (n[4] - n[5]) * (n[6] - n[7]);
-    return det.sign();
+    if (scale.bits() <= 62) return cross_sign_64(scale, v);
+    if (scale.bits() <= 125) return cross_sign_128(scale, v);
+    return cross_sign_gmp(scale, v);
 }
 
 int orientation(Point a, Point b, Point c) { return cross_sign(a, b, a, c); }
@@ -180,30 +269,89 @@ bool is_nearest_double(double v, const Rational& exact_value) {
     return std::fabs(v) < kMax || abs(exact_value) < overflow;
 }
 
-bool strictly_on_segment(Point a, Point b, Point p) {
-    if (p == a || p == b) return false;
-    return between(a.x, p.x, b.x) && between(a.y, p.y, b.y) && orientation(a, b, p) == 0;
+namespace {
+
+// Segment tests written once over any view of points: V gives point(a) and
+// orientation(a, b, c) for its handles (Points themselves, or indexes into
+// an ExactPoints).
+template <class V, class H>
+bool strictly_on_segment_in(const V& view, H a, H b, H p) {
+    const Point pa = view.point(a), pb = view.point(b), pp = view.point(p);
+    if (pp == pa || pp == pb) return false;
+    return between(pa.x, pp.x, pb.x) && between(pa.y, pp.y, pb.y) && view.orientation(a, b, p) == 0;
 }
 
-Meeting meeting(Point a, Point b, Point c, Point d) {
-    if ((a == c && b == d) || (a == d && b == c)) return Meeting::Same;
-    const bool shared = a == c || a == d || b == c || b == d;
-    const int o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+template <class V, class H>
+Meeting meeting_in(const V& view, H a, H b, H c, H d) {
+    const Point pa = view.point(a), pb = view.point(b), pc = view.point(c), pd = view.point(d);
+    if ((pa == pc && pb == pd) || (pa == pd && pb == pc)) return Meeting::Same;
+    const bool shared = pa == pc || pa == pd || pb == pc || pb == pd;
+    auto inside = [&] {
+        return strictly_on_segment_in(view, a, b, c) || strictly_on_segment_in(view, a, b, d) ||
+               strictly_on_segment_in(view, c, d, a) || strictly_on_segment_in(view, c, d, b);
+    };
+    const int o1 = view.orientation(a, b, c), o2 = view.orientation(a, b, d);
     if (o1 == 0 && o2 == 0) {
         // Collinear: they share more than a point when an end of one lies inside the other.
-        const bool inside = strictly_on_segment(a, b, c) || strictly_on_segment(a, b, d) || strictly_on_segment(c, d, a) ||
-                            strictly_on_segment(c, d, b);
-        if (inside) return Meeting::Overlap;
+        if (inside()) return Meeting::Overlap;
         return shared ? Meeting::SharedEndpoint : Meeting::None;
     }
-    const int o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+    const int o3 = view.orientation(c, d, a), o4 = view.orientation(c, d, b);
     if (o1 * o2 < 0 && o3 * o4 < 0) return Meeting::Crossing;
-    if (strictly_on_segment(a, b, c) || strictly_on_segment(a, b, d) || strictly_on_segment(c, d, a) ||
-        strictly_on_segment(c, d, b)) {
-        return Meeting::Touch;
-    }
+    if (inside()) return Meeting::Touch;
     return shared ? Meeting::SharedEndpoint : Meeting::None;
 }
+
+// Points as their own handles.
+struct Plain {
+    static Point point(Point p) { return p; }
+    static int orientation(Point a, Point b, Point c) { return dcel::oracle::orientation(a, b, c); }
+};
+
+}  // namespace
+
+bool strictly_on_segment(Point a, Point b, Point p) { return strictly_on_segment_in(Plain{}, a, b, p); }
+
+Meeting meeting(Point a, Point b, Point c, Point d) { return meeting_in(Plain{}, a, b, c, d); }
+
+ExactPoints::ExactPoints(const std::vector<Point>& points) : points_(&points) {
+    std::vector<Dyadic> d;
+    d.reserve(2 * points.size());
+    CommonScale scale;
+    for (const Point& p : points) {
+        for (const double v : {p.x, p.y}) {
+            if (!std::isfinite(v)) return;  // stays on the per-call route
+            d.push_back(dyadic(v));
+            scale.add(d.back());
+        }
+    }
+    if (scale.bits() > 62) return;
+    integers_ = true;
+    x_.reserve(points.size());
+    y_.reserve(points.size());
+    for (std::size_t i = 0; i < d.size(); i += 2) {
+        x_.push_back(scale.small(d[i]));
+        y_.push_back(scale.small(d[i + 1]));
+    }
+}
+
+int ExactPoints::orientation(Index a, Index b, Index c) const {
+    if (!integers_) return dcel::oracle::orientation(point(a), point(b), point(c));
+    // Differences below 2^63, products below 2^126: exact in 128 bits.
+    const Wide det = static_cast<Wide>(x_[b] - x_[a]) * (y_[c] - y_[a]) - static_cast<Wide>(y_[b] - y_[a]) * (x_[c] - x_[a]);
+    return sign_of(det);
+}
+
+int ExactPoints::angle_order(Index centre, Index a, Index b) const {
+    const Point c = point(centre), pa = point(a), pb = point(b);
+    auto upper = [&](Point q) { return q.y > c.y || (q.y == c.y && q.x > c.x); };
+    if (upper(pa) != upper(pb)) return upper(pa) ? -1 : 1;
+    return -orientation(centre, a, b);
+}
+
+bool ExactPoints::strictly_on_segment(Index a, Index b, Index p) const { return strictly_on_segment_in(*this, a, b, p); }
+
+Meeting ExactPoints::meeting(Index a, Index b, Index c, Index d) const { return meeting_in(*this, a, b, c, d); }
 
 Rational parameter_of_point(Point a, Point b, Point p) {
     const Rational wx = exact(b.x) - exact(a.x), wy = exact(b.y) - exact(a.y);

@@ -4,9 +4,10 @@
 // double is an integer times a power of two, so the operands of a cross
 // product, scaled by one common power of two, are integers. When those
 // integers fit in 62 bits, the products and their difference fit in a
-// 128-bit integer, which decides the sign at once; otherwise (exponents far
-// apart: subnormals beside ordinary values, or values near DBL_MAX) the
-// same expression is evaluated in GMP's arbitrary-precision integers.
+// 128-bit integer, which decides the sign at once; up to 125 bits, the
+// differences still fit one and the products are compared as 256-bit
+// numbers; beyond (exponents far apart: subnormals beside ordinary values,
+// values near DBL_MAX) GMP's arbitrary-precision integers do it.
 // Nothing here uses error bounds, expansions or the library's predicates
 // (orient2d, compare_angle, segment_contact, ExactSum), so a bug there
 // cannot hide here. Values that are not signs (areas, positions along a
@@ -14,9 +15,11 @@
 #pragma once
 
 #include <boost/multiprecision/gmp.hpp>
+#include <cstdint>
 #include <vector>
 
 #include "dcel/geometry/point.hpp"
+#include "dcel/ids.hpp"
 
 namespace dcel::oracle {
 
@@ -73,5 +76,26 @@ enum class Meeting { None, SharedEndpoint, Crossing, Touch, Overlap, Same };
 // Where the line through c and d crosses the line a->b (not parallel), as t
 // with the crossing at a + t (b - a).
 [[nodiscard]] Rational parameter_of_crossing(Point a, Point b, Point c, Point d);
+
+// The points of one graph, for many exact tests among them by index: when
+// one common power of two turns every coordinate into an integer of at
+// most 62 bits (the usual case), the integers are kept and each
+// orientation is two 128-bit products; otherwise (or with a non-finite
+// coordinate) each test takes the per-call route above. The same answers
+// either way. Holds a reference to the points.
+class ExactPoints {
+public:
+    explicit ExactPoints(const std::vector<Point>& points);
+    [[nodiscard]] Point point(Index i) const { return (*points_)[i]; }
+    [[nodiscard]] int orientation(Index a, Index b, Index c) const;
+    [[nodiscard]] int angle_order(Index centre, Index a, Index b) const;
+    [[nodiscard]] bool strictly_on_segment(Index a, Index b, Index p) const;
+    [[nodiscard]] Meeting meeting(Index a, Index b, Index c, Index d) const;
+
+private:
+    const std::vector<Point>* points_;
+    bool integers_ = false;
+    std::vector<std::int64_t> x_, y_;  // the scaled coordinates, when integers_
+};
 
 }  // namespace dcel::oracle

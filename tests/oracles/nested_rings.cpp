@@ -5,10 +5,14 @@
 namespace dcel::oracle {
 
 void NestedRings::add(std::vector<Point> ring, Index label, Index group) {
+    Rational area = twice_area(ring);
+    add(std::move(ring), label, group, std::move(area));
+}
+
+void NestedRings::add(std::vector<Point> ring, Index label, Index group, Rational area) {
     const auto [xl, xh] = std::minmax_element(ring.begin(), ring.end(), [](Point a, Point b) { return a.x < b.x; });
     const auto [yl, yh] = std::minmax_element(ring.begin(), ring.end(), [](Point a, Point b) { return a.y < b.y; });
     const double x0 = xl->x, x1 = xh->x, y0 = yl->y, y1 = yh->y;
-    Rational area = twice_area(ring);
     rings_.push_back({std::move(ring), label, group, std::move(area), x0, x1, y0, y1});
 }
 

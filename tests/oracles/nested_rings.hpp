@@ -16,8 +16,10 @@ namespace dcel::oracle {
 class NestedRings {
 public:
     // `label` is what innermost_around returns for this ring; `group` lets
-    // a query skip the rings of its own component.
+    // a query skip the rings of its own component. twice_area, when known,
+    // saves computing it again.
     void add(std::vector<Point> ring, Index label, Index group);
+    void add(std::vector<Point> ring, Index label, Index group, Rational twice_area);
 
     // The label of the innermost ring around p, ignoring rings whose group
     // is skip_group; kNoIndex when no ring winds around p.

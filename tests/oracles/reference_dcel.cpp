@@ -22,10 +22,11 @@ Rotations rotation_system(const HalfEdgeGraph& h) {
     r.ring.resize(h.points.size());
     r.position.resize(h.origin.size());
     for (Index e = 0; e < h.origin.size(); ++e) r.ring[h.origin[e]].push_back(e);
+    const ExactPoints geometry(h.points);
     for (Index v = 0; v < r.ring.size(); ++v) {
-        auto head = [&](Index e) { return h.points[h.origin[h.twin[e]]]; };
+        auto head = [&](Index e) { return h.origin[h.twin[e]]; };
         std::sort(r.ring[v].begin(), r.ring[v].end(),
-                  [&](Index a, Index b) { return angle_order(h.points[v], head(a), head(b)) < 0; });
+                  [&](Index a, Index b) { return geometry.angle_order(v, head(a), head(b)) < 0; });
         for (Index k = 0; k < r.ring[v].size(); ++k) r.position[r.ring[v][k]] = k;
     }
     return r;
@@ -90,7 +91,7 @@ void place_components(const HalfEdgeGraph& h, ReferenceDcel& r) {
     NestedRings outer_cycles;
     for (Index f = 1; f < r.outer_cycle.size(); ++f) {
         const std::vector<Index>& cycle = r.cycles[r.outer_cycle[f]];
-        outer_cycles.add(cycle_points(h, cycle), f, component[h.origin[cycle.front()]]);
+        outer_cycles.add(cycle_points(h, cycle), f, component[h.origin[cycle.front()]], r.twice_area[r.outer_cycle[f]]);
     }
     auto face_around = [&](Index v) {
         const Index f = outer_cycles.innermost_around(h.points[v], component[v]);
