@@ -9,6 +9,8 @@
 // with Boost's Boyer-Myrvold test: a graph Boost calls non-planar must be
 // rejected. build() without the crossing check must terminate without
 // memory errors on any input, and equal the checked build on a valid one.
+// The generators' own guard (gen::find_problem, which keeps every generated
+// graph valid) must find a problem exactly when brute force does.
 //
 // Input: readable text, see support/text_graph.hpp, e.g.
 //   points 0 0, 4 4, 0 4, 4 0  edges 0 1, 2 3
@@ -18,11 +20,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "dcel/build.hpp"
 #include "dcel/dump.hpp"
 #include "dcel/error.hpp"
+#include "dcel/gen/brute_force.hpp"
 #include "dcel/validate.hpp"
 #include "oracles/boost_oracle.hpp"
 #include "oracles/brute_force.hpp"
@@ -46,6 +50,9 @@ using oracle::describe;
 
 void check_graph(const PlanarGraph& g) {
     const oracle::DefectKinds defects = oracle::find_defects(g, oracle::PairSearch::AllPairs).kinds();
+    const std::optional<std::string> problem = gen::find_problem(g);
+    FUZZ_CHECK(problem.has_value() == defects.any(),
+               "the generators' guard says " << problem.value_or("valid") << ", brute force finds " << describe(defects));
     const bool planar = oracle::boyer_myrvold(g).planar;
     // The oracles check each other: a graph that is not planar at all has
     // no drawing without a geometric defect among its edges.

@@ -17,7 +17,10 @@
 // count_components(), faces_around() against the exact angular order,
 // neighbours() against a scan of all half-edges, cycle_area() signs and
 // face_area() values against exact areas (face_area promises the exact
-// area rounded once).
+// area rounded once); and at a few points and segments built from the
+// graph's own points (vertices, rounded edge midpoints, rounded centroids),
+// PointLocator and locate_by_scan against exact point location, and
+// stab_segment against the exact stabbing checks (tests/oracles/stab_walk.hpp).
 //
 // Input: readable text (support/graph_input.hpp): a recipe naming a
 // generated graph, e.g.
@@ -28,20 +31,25 @@
 //   points 0 0, 4 0, 0 4, 1 1  edges 0 1, 1 2, 2 0
 // A graph given point by point that is not valid is skipped.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
+#include "dcel/locate.hpp"
 #include "dcel/queries.hpp"
+#include "dcel/stab.hpp"
 #include "dcel/validate.hpp"
 #include "oracles/boost_oracle.hpp"
 #include "oracles/brute_force.hpp"
 #include "oracles/exact.hpp"
 #include "oracles/reference_dcel.hpp"
+#include "oracles/stab_walk.hpp"
 #include "oracles/union_find.hpp"
 #include "support/dcel_views.hpp"
 #include "support/face_shapes.hpp"
@@ -176,6 +184,49 @@ void check_areas(const Dcel& d) {
     }
 }
 
+// Probe points from the graph's own geometry, where location is hardest: a
+// vertex, the rounded midpoint of an edge (on it or within rounding), and
+// the rounded centroid of three vertices (often inside a face).
+std::vector<Point> probes(const PlanarGraph& g) {
+    std::vector<Point> out;
+    const std::size_t n = g.vertices.size(), m = g.edges.size();
+    if (n == 0) return out;
+    for (std::size_t k = 1; k <= 2; ++k) {
+        const Point a = g.vertices[(k * 7919) % n], b = g.vertices[(k * 104729 + 1) % n], c = g.vertices[(k * 13 + 2) % n];
+        out.push_back(a);
+        if (m > 0) {
+            const GraphEdge& e = g.edges[(k * 31) % m];
+            const Point u = g.vertices[e.u.index()], w = g.vertices[e.v.index()];
+            out.push_back({(u.x + w.x) / 2, (u.y + w.y) / 2});
+        }
+        out.push_back({(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3});
+    }
+    return out;
+}
+
+void check_location_and_stabbing(const Dcel& d, const PlanarGraph& g) {
+    const std::vector<Point> points = probes(g);
+    if (points.empty()) return;
+    const oracle::ExactLocator exact(d);
+    const PointLocator locator(d);
+    for (const Point p : points) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // a centroid of huge coordinates overflows
+        const Location want = exact.locate(p);
+        FUZZ_CHECK(locator.locate(p) == want,
+                   "PointLocator puts (" << p.x << ", " << p.y << ") " << locator.locate(p) << ", exact location " << want);
+        FUZZ_CHECK(locate_by_scan(d, p) == want, "locate_by_scan puts (" << p.x << ", " << p.y << ") "
+                                                                         << locate_by_scan(d, p) << ", exact location "
+                                                                         << want);
+    }
+    for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
+        const Point a = points[i], b = points[i + 1];
+        if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) continue;
+        const std::string problem = oracle::check_walk(d, exact, a, b, stab_segment(d, a, b));
+        FUZZ_CHECK(problem.empty(),
+                   "stab_segment from (" << a.x << ", " << a.y << ") to (" << b.x << ", " << b.y << "): " << problem);
+    }
+}
+
 // Skips (false) a graph given point by point that is not valid; a
 // generated one must be.
 bool check(const GraphInput& in) {
@@ -197,6 +248,7 @@ bool check(const GraphInput& in) {
     check_faces_around(d);
     check_neighbours(d);
     check_areas(d);
+    check_location_and_stabbing(d, g);
     return true;
 }
 

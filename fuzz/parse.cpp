@@ -16,6 +16,11 @@
 // the documents whose values, as nlohmann reads them, have the documented
 // shape, and read the same values; a dump the reader accepts holds nlohmann's
 // values field by field.
+//
+// And the two routes from decimal text to a double (io/decimal.hpp):
+// std::from_chars and the strtod_l fallback that libc++ builds use must
+// give the same answer (match length, error, bits) wherever a number could
+// start in the input.
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +32,7 @@
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
 #include "dcel/io/dcel_json.hpp"
+#include "dcel/io/decimal.hpp"
 #include "dcel/io/graph_json.hpp"
 #include "dcel/io/json_reader.hpp"
 #include "dcel/validate.hpp"
@@ -78,6 +84,26 @@ void check_validators_agree(const DcelDump& d) {
     if (first) {
         FUZZ_CHECK(first->message.find('\n') == std::string::npos, "multi-line violation: " << first->message);
         FUZZ_CHECK(all.front().invariant == first->invariant, "validate and validate_all disagree on the first");
+    }
+}
+
+// At up to 16 places where a number could start (after a byte that cannot
+// be part of one), parse_double and its strtod fallback agree.
+void check_decimal_routes(std::string_view text) {
+    auto starts = [](char c) {
+        return (c >= '0' && c <= '9') || c == '-' || c == '.' || c == 'i' || c == 'I' || c == 'n' || c == 'N';
+    };
+    int tried = 0;
+    for (std::size_t i = 0; i < text.size() && tried < 16; ++i) {
+        if (!starts(text[i]) || (i > 0 && starts(text[i - 1]))) continue;
+        ++tried;
+        double a = 0.5, b = 0.5;  // untouched on error, as from_chars leaves it
+        const auto ra = io::parse_double(text.data() + i, text.data() + text.size(), a);
+        const auto rb = io::parse_double_strtod(text.data() + i, text.data() + text.size(), b);
+        FUZZ_CHECK(ra.ptr == rb.ptr && ra.ec == rb.ec && std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b),
+                   "parse_double and its strtod fallback differ at byte "
+                       << i << ": " << (ra.ptr - text.data() - i) << " vs " << (rb.ptr - text.data() - i) << " bytes, " << a
+                       << " vs " << b);
     }
 }
 
@@ -207,6 +233,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     const dcel::fuzz::JsonFacts facts = dcel::fuzz::json_facts(text);
     dcel::fuzz::check_json_syntax(text, facts);
+    dcel::fuzz::check_decimal_routes(text);
     dcel::fuzz::graph_path(text, facts);
     dcel::fuzz::dump_path(text, facts);
     dcel::fuzz::faces_path(text, facts);

@@ -19,45 +19,59 @@
 
 namespace dcel::oracle {
 
-// The face around p, a point on no edge: the one whose outer cycle is the
-// innermost around p (the unbounded face when none is).
-inline FaceId face_around(const Dcel& d, Point p) {
-    NestedRings outer_cycles;
-    for (Index f = 0; f < d.num_faces(); ++f) {
-        if (d.is_unbounded(FaceId(f))) continue;
-        std::vector<Point> ring;
-        for (const HalfEdgeId h : d.cycle(d.outer(FaceId(f)))) ring.push_back(d.point(d.origin(h)));
-        outer_cycles.add(std::move(ring), f, 0);
+// Where a point lies in d, by geometry alone: at a vertex, inside an edge,
+// or in the face whose outer cycle is the innermost around it (exact
+// winding numbers and areas; the unbounded face when none is). The outer
+// cycles are gathered once, for many queries.
+class ExactLocator {
+public:
+    explicit ExactLocator(const Dcel& d) : d_(d) {
+        for (Index f = 0; f < d.num_faces(); ++f) {
+            if (d.is_unbounded(FaceId(f))) continue;
+            std::vector<Point> ring;
+            for (const HalfEdgeId h : d.cycle(d.outer(FaceId(f)))) ring.push_back(d.point(d.origin(h)));
+            outer_cycles_.add(std::move(ring), f, 0);
+        }
     }
-    const Index f = outer_cycles.innermost_around(p);
-    return f == kNoIndex ? Dcel::kUnboundedFace : FaceId(f);
-}
 
-// Where p lies in d, by geometry alone: at a vertex, inside an edge, or in a face.
-inline Location locate_exactly(const Dcel& d, Point p) {
-    for (Index v = 0; v < d.num_vertices(); ++v) {
-        if (d.point(VertexId(v)) == p) return Location::at_vertex(VertexId(v));
+    // The face around p, a point on no edge.
+    [[nodiscard]] FaceId face_around(Point p) const {
+        const Index f = outer_cycles_.innermost_around(p);
+        return f == kNoIndex ? Dcel::kUnboundedFace : FaceId(f);
     }
-    for (Index e = 0; e < d.num_edges(); ++e) {
-        const HalfEdgeId h = half_edge_of(EdgeId(e), 0);
-        if (strictly_on_segment(d.point(d.origin(h)), d.point(d.target(h)), p)) return Location::on_edge(EdgeId(e));
-    }
-    return Location::in_face(face_around(d, p));
-}
 
-// The faces that have v on their boundary, or the face an isolated v lies in.
-inline std::vector<FaceId> faces_at(const Dcel& d, VertexId v) {
-    std::vector<FaceId> out;
-    for (Index h = 0; h < d.num_half_edges(); ++h) {
-        if (d.origin(HalfEdgeId(h)) == v) out.push_back(d.face(HalfEdgeId(h)));
+    [[nodiscard]] Location locate(Point p) const {
+        for (Index v = 0; v < d_.num_vertices(); ++v) {
+            if (d_.point(VertexId(v)) == p) return Location::at_vertex(VertexId(v));
+        }
+        for (Index e = 0; e < d_.num_edges(); ++e) {
+            const HalfEdgeId h = half_edge_of(EdgeId(e), 0);
+            if (strictly_on_segment(d_.point(d_.origin(h)), d_.point(d_.target(h)), p)) return Location::on_edge(EdgeId(e));
+        }
+        return Location::in_face(face_around(p));
     }
-    if (out.empty()) out.push_back(face_around(d, d.point(v)));
-    return out;
-}
+
+    // The faces that have v on their boundary, or the face an isolated v lies in.
+    [[nodiscard]] std::vector<FaceId> faces_at(VertexId v) const {
+        std::vector<FaceId> out;
+        for (Index h = 0; h < d_.num_half_edges(); ++h) {
+            if (d_.origin(HalfEdgeId(h)) == v) out.push_back(d_.face(HalfEdgeId(h)));
+        }
+        if (out.empty()) out.push_back(face_around(d_.point(v)));
+        return out;
+    }
+
+private:
+    const Dcel& d_;
+    NestedRings outer_cycles_;
+};
+
+inline Location locate_exactly(const Dcel& d, Point p) { return ExactLocator(d).locate(p); }
 
 // Checks one walk from a to b; returns a description of the first problem,
 // or "" when there is none.
-inline std::string check_walk(const Dcel& d, Point a, Point b, const std::vector<StabPiece>& pieces) {
+inline std::string check_walk(const Dcel& d, const ExactLocator& locator, Point a, Point b,
+                              const std::vector<StabPiece>& pieces) {
     if (pieces.empty()) return "no pieces";
     auto matches = [&](const StabPiece& p, Location l) {
         switch (l.kind) {
@@ -67,9 +81,9 @@ inline std::string check_walk(const Dcel& d, Point a, Point b, const std::vector
         }
         return false;
     };
-    if (!matches(pieces.front(), locate_exactly(d, a))) return "does not start where a lies";
+    if (!matches(pieces.front(), locator.locate(a))) return "does not start where a lies";
     if (a == b) return pieces.size() == 1 ? "" : "a point gives more than one piece";
-    if (!matches(pieces.back(), locate_exactly(d, b))) return "does not end where b lies";
+    if (!matches(pieces.back(), locator.locate(b))) return "does not end where b lies";
     // The brute-force contacts.
     std::set<Index> want_vertices, want_across, want_along, got_vertices, got_across, got_along;
     for (Index v = 0; v < d.num_vertices(); ++v) {
@@ -120,13 +134,17 @@ inline std::string check_walk(const Dcel& d, Point a, Point b, const std::vector
                 const HalfEdgeId h = half_edge_of(n.edge, 0);
                 if (d.face(h) != p.face && d.face(Dcel::twin(h)) != p.face) return "a face next to an edge it is not beside";
             } else {
-                const std::vector<FaceId> around = faces_at(d, n.vertex);
+                const std::vector<FaceId> around = locator.faces_at(n.vertex);
                 if (std::find(around.begin(), around.end(), p.face) == around.end())
                     return "a face next to a vertex not on it";
             }
         }
     }
     return "";
+}
+
+inline std::string check_walk(const Dcel& d, Point a, Point b, const std::vector<StabPiece>& pieces) {
+    return check_walk(d, ExactLocator(d), a, b, pieces);
 }
 
 }  // namespace dcel::oracle
