@@ -7,8 +7,11 @@
 # <name>_fuzzer.options (fuzz/<name>.options).
 # Runs in the repository root (the Dockerfile's WORKDIR) unless DCEL_SRC says
 # otherwise; builds in $WORK.
+# Outside the image (docs/fuzzing.md), $OUT may not exist yet: it is made.
 src=${DCEL_SRC:-$PWD}
 build=${WORK:-/tmp}/dcel-fuzz-build
+: "${OUT:?OUT must name the folder for the fuzzers (made if missing)}"
+mkdir -p "$OUT"
 
 # CMAKE_BUILD_TYPE=None adds no flags of its own: $CFLAGS/$CXXFLAGS are all.
 cmake -S "$src" -B "$build" -G Ninja \

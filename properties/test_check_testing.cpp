@@ -1,7 +1,7 @@
-// dcel/check/testing.hpp as a user would use it: two small in-test DCEL
-// face solvers, one right (exact angular order, clockwise neighbour) and one
-// with a planted bug (the counterclockwise neighbour). The helpers must pass
-// the first and fail the second, with a shrunk graph and a report.
+// dcel/testing/check_testing.hpp as a user would use it, on in-test solvers
+// (support/planted_solvers.hpp): the helpers must pass the right one and fail
+// the one with a planted bug, with a shrunk graph, a report and the seed.
+// test_check_testing_seeds.cpp runs every planted bug on seeds 1 to 20.
 #include "dcel/testing/check_testing.hpp"
 
 #include <gtest/gtest.h>
@@ -9,50 +9,18 @@
 
 #include <algorithm>
 
-#include "dcel/geometry/predicates.hpp"
 #include "support/check_helpers.hpp"
+#include "support/planted_solvers.hpp"
 
 namespace {
 
 using dcel::Index;
 using dcel::PlanarGraph;
 using dcel::check::FacesAnswer;
+using dcel::props::planted::ccw_faces;
+using dcel::props::planted::right_faces;
 
-// Faces from the next rule: next(u->v) is the half-edge leaving v next to
-// v->u in clockwise order (or counterclockwise, with the bug).
-FacesAnswer faces_by_rule(const PlanarGraph& g, bool clockwise) {
-    const auto halves = static_cast<Index>(2 * g.edges.size());
-    auto origin = [&](Index h) { return (h & 1U) == 0 ? g.edges[h >> 1U].u.index() : g.edges[h >> 1U].v.index(); };
-    std::vector<std::vector<Index>> around(g.vertices.size());
-    for (Index h = 0; h < halves; ++h) around[origin(h)].push_back(h);
-    std::vector<Index> position(halves);
-    for (std::size_t v = 0; v < around.size(); ++v) {
-        const dcel::Point c = g.vertices[v];
-        std::sort(around[v].begin(), around[v].end(), [&](Index a, Index b) {  // counterclockwise from east
-            return dcel::compare_angle(c, g.vertices[origin(a ^ 1U)], g.vertices[origin(b ^ 1U)]) == dcel::Sign::Negative;
-        });
-        for (std::size_t i = 0; i < around[v].size(); ++i) position[around[v][i]] = static_cast<Index>(i);
-    }
-    auto next = [&](Index h) {
-        const auto& ring = around[origin(h ^ 1U)];
-        const std::size_t i = position[h ^ 1U];
-        return ring[clockwise ? (i + ring.size() - 1) % ring.size() : (i + 1) % ring.size()];
-    };
-    FacesAnswer out;
-    std::vector<char> seen(halves, 0);
-    for (Index h = 0; h < halves; ++h) {
-        if (seen[h] != 0) continue;
-        auto& cycle = out.emplace_back();
-        for (Index x = h; seen[x] == 0; x = next(x)) {
-            seen[x] = 1;
-            cycle.push_back(origin(x));
-        }
-    }
-    return out;
-}
-
-FacesAnswer right_faces(const PlanarGraph& g) { return faces_by_rule(g, true); }
-FacesAnswer buggy_faces(const PlanarGraph& g) { return faces_by_rule(g, false); }
+FacesAnswer buggy_faces(const PlanarGraph& g) { return ccw_faces(g); }
 
 PlanarGraph triangle_with_tail() {
     PlanarGraph g;
@@ -99,6 +67,7 @@ TEST(CheckTesting, BuggySolverIsCaughtAndShrunk) {
     const std::string message = result.message();
     std::cerr << message;
     EXPECT_NE(message.find("smallest failing case found:\ngraph: {\"vertices\""), std::string::npos);
+    EXPECT_NE(message.find("replay with CheckOptions{.seed = "), std::string::npos) << message;
     // The counterclockwise neighbour differs from the clockwise one only at a
     // vertex of degree 3 or more: a star of 3 edges (4 vertices) is as small as
     // a counterexample gets, and shrinking must get close.

@@ -431,7 +431,7 @@ TEST(CheckReport, TextAndJson) {
     const Dcel d = build(graph({{0, 0}, {1, 0}, {0, 1}}, {{0, 1}, {1, 2}, {2, 0}}));
     EXPECT_EQ(check::report_text(compare_faces(d, faces_answer(d))), "agrees\n");
     EXPECT_EQ(check::report_json(compare_faces(d, faces_answer(d))),
-              "{\"agrees\": true, \"count\": 0, \"unlisted\": 0, \"differences\": []}\n");
+              "{\"agrees\": true, \"count\": 0, \"unlisted\": 0, \"differences\": [], \"notes\": []}\n");
     const FacesAnswer full = faces_answer(d);
     ASSERT_EQ(full.size(), 2U);
     std::string cycle;  // the first cycle, as the text writes it
@@ -442,7 +442,7 @@ TEST(CheckReport, TextAndJson) {
     EXPECT_EQ(check::report_json(r),
               "{\"agrees\": false, \"count\": 1, \"unlisted\": 0, \"differences\": [\n"
               "  {\"kind\": \"missing-cycle\", \"message\": \"the reference cycle [" +
-                  cycle + "] is missing from the answer\", \"vertices\": [" + cycle + "]}\n]}\n");
+                  cycle + "] is missing from the answer\", \"vertices\": [" + cycle + "]}\n], \"notes\": []}\n");
     for (const auto k : {DifferenceKind::VertexCount, DifferenceKind::WrongIsolatedVertex, DifferenceKind::WrongPoint}) {
         EXPECT_NE(check::kind_name(k), "unknown");
     }

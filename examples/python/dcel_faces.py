@@ -15,7 +15,8 @@ Exact: coordinates are doubles, and a double is a rational number, so
 Fraction(x) holds it without rounding. Directions around a vertex are ordered
 by half-plane, then by the sign of a cross product: no atan2, no epsilon.
 
-DCEL_EXAMPLE_BUG=NAME plants one bug, to see `dcel diff` catch it:
+DCEL_EXAMPLE_BUG=NAME plants a bug, to see `dcel diff` catch it (several,
+comma-separated, plant several):
     atan2      directions are ordered by math.atan2 of float differences,
                which cannot separate nearly parallel directions (the demo)
     ccw        next(u->v) takes the neighbour just counterclockwise of v->u:
@@ -29,7 +30,7 @@ import sys
 from fractions import Fraction
 from functools import cmp_to_key
 
-BUG = os.environ.get("DCEL_EXAMPLE_BUG", "")
+BUG = set(os.environ.get("DCEL_EXAMPLE_BUG", "").split(","))
 
 
 def read_graph(text):
@@ -68,7 +69,7 @@ def faces(points, edges):
         (x0, y0), (x1, y1) = points[origin[h]], points[origin[h ^ 1]]
         return (x1 - x0, y1 - y0)
 
-    if BUG == "atan2":
+    if "atan2" in BUG:
         def key(h):
             dx, dy = direction(h)
             return math.atan2(float(dy), float(dx))  # planted: rounds the angle
@@ -87,7 +88,7 @@ def faces(points, edges):
     for h in range(len(origin)):
         twin = h ^ 1  # leaves v = target of h
         ring = rings[origin[twin]]
-        if BUG == "ccw":
+        if "ccw" in BUG:
             nxt.append(ring[(position[twin] + 1) % len(ring)])  # planted: counterclockwise
             continue
         nxt.append(ring[position[twin] - 1])  # the one just clockwise of the twin
@@ -103,7 +104,7 @@ def faces(points, edges):
             cycle.append(origin[h])
             h = nxt[h]
         cycles.append(cycle)
-    if BUG == "isolated":
+    if "isolated" in BUG:
         cycles += [[v] for v, ring in enumerate(rings) if not ring]  # planted
     return cycles
 

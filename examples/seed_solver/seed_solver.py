@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The seed solver (../shared/seeds/000, "an array-based DCEL builder"),
+"""The seed solver (the project's starting point, "an array-based DCEL builder"),
 adapted to the `dcel diff` protocol and KEPT WITH ITS BUGS, so that
 `dcel diff` has a real-world implementation to catch:
 

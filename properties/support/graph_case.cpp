@@ -2,41 +2,15 @@
 
 #include <cmath>
 
-#include "dcel/io/graph_json.hpp"
+#include <utility>
 
 namespace dcel::props {
 
-void showValue(const GraphCase& c, std::ostream& os) {
-    os << "family " << gen::family_name(c.params.family) << ", seed " << c.params.seed << ", " << c.params.vertices
-       << " vertices asked; " << c.graph.vertices.size() << " vertices, " << c.graph.edges.size()
-       << " edges after shrinking. Paste into `dcel faces -`:\n"
-       << io::write_graph(c.graph);
-}
-
 rc::Gen<GraphCase> graphs(std::vector<gen::Family> families) {
-    const rc::Gen<gen::Params> params = rc::gen::withSize([families](int size) {
-        return rc::gen::apply(
-            [](gen::Family f, std::uint64_t seed, int n) {
-                return gen::Params{f, seed, static_cast<std::size_t>(n)};
-            },
-            rc::gen::elementOf(families), rc::gen::arbitrary<std::uint64_t>(), rc::gen::inRange(0, 3 * size + 4));
-    });
-    return rc::gen::mapcat(rc::gen::noShrink(params), [](const gen::Params& p) {
-        return rc::Gen<GraphCase>([p](const rc::Random&, int) {
-            return rc::shrinkable::shrinkRecur(GraphCase{p, gen::generate(p)}, [](const GraphCase& c) {
-                return rc::seq::map(rc::seq::fromContainer(gen::shrink_candidates(c.graph)),
-                                    [params = c.params](PlanarGraph g) {
-                                        return GraphCase{params, std::move(g)};
-                                    });
-            });
-        });
-    });
+    return check::graph_cases({.families = std::move(families), .vertices_per_size = 3, .targeted = false});
 }
 
-rc::Gen<GraphCase> graphs() {
-    const auto all = gen::all_families();
-    return graphs(std::vector<gen::Family>(all.begin(), all.end()));
-}
+rc::Gen<GraphCase> graphs() { return graphs({}); }
 
 bool has_integer_coordinates(const PlanarGraph& g) {
     for (const Point& p : g.vertices) {

@@ -1,12 +1,8 @@
-// RapidCheck generators of planar straight-line graphs, drawn from dcel::gen.
-//
-// A case is (family, seed, size) -> gen::generate, with the graph size
-// following RapidCheck's size parameter (0 .. 3 * size + 3 vertices, so the
-// default max_size of 100 reaches a few hundred edges). The parameters never
-// shrink; the graph shrinks through gen::shrink_candidates, which yields only
-// valid graphs, so a counterexample ends as a small valid graph. A case prints
-// as its parameters plus the graph as one line of JSON that pastes straight
-// into `dcel faces`.
+// The properties' graphs: dcel/testing/graph_cases.hpp (the generator the
+// in-process checking helpers use too), with the graph size following
+// RapidCheck's size parameter at 3 vertices per unit (0 .. 3 * size + 3
+// vertices, so the default max_size of 100 reaches a few hundred edges), all
+// families drawn uniformly.
 #pragma once
 
 #include <rapidcheck.h>
@@ -16,15 +12,11 @@
 
 #include "dcel/gen/generate.hpp"
 #include "dcel/graph.hpp"
+#include "dcel/testing/graph_cases.hpp"
 
 namespace dcel::props {
 
-struct GraphCase {
-    gen::Params params;  // where the graph came from (before shrinking)
-    PlanarGraph graph;
-};
-
-void showValue(const GraphCase& c, std::ostream& os);
+using check::GraphCase;  // printed by check::showValue
 
 // Graphs from any family (or from the given ones), shrinking to valid graphs.
 [[nodiscard]] rc::Gen<GraphCase> graphs();

@@ -15,7 +15,7 @@ void add_build_command(CLI::App& app, Action& action) {
     cmd->callback([&action, path, compact] {
         action = [path, compact] {
             const PlanarGraph g = load_graph(*path);
-            const Dcel d = with_source(*path, [&] { return build(g); });
+            const Dcel d = build_dcel(*path, g);
             write_stdout(io::write_dump(to_dump(d), *compact ? io::DumpStyle::Compact : io::DumpStyle::Lines));
             return kExitOk;
         };

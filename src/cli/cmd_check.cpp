@@ -1,14 +1,12 @@
 // dcel check GRAPH ANSWER: compares another implementation's answer for GRAPH
 // with the reference. Exit 0 agrees, 1 differs (an unreadable ANSWER is a
 // difference), 2 usage error or an unreadable or invalid GRAPH.
-#include <variant>
-
+#include "answer_options.hpp"
 #include "commands.hpp"
 #include "dcel/build.hpp"
-#include "dcel/check/compare.hpp"
+#include "dcel/check/answer.hpp"
 #include "dcel/check/report.hpp"
 #include "dcel/error.hpp"
-#include "dcel/io/dcel_json.hpp"
 #include "dcel/io/graph_json.hpp"
 
 namespace dcel::cli {
@@ -17,11 +15,17 @@ namespace {
 
 constexpr const char* kCheckHelp =
     "Compare ANSWER, another implementation's output for GRAPH, with the reference.\n"
-    "ANSWER is either the faces form, {\"faces\": [[v, ...], ...]} or a bare [[v, ...], ...]\n"
-    "(every boundary cycle as vertex ids in next order, as `dcel faces` prints; cycle\n"
-    "order and rotation do not matter, orientation does), or a whole DCEL dump in the\n"
-    "`dcel build` format (validated, then compared up to the numbering of half-edges\n"
-    "and faces). Either file may be - for stdin, not both. See docs/formats.md.\n"
+    "ANSWER is one of these kinds (--answer; detected from its shape when not given):\n"
+    "  faces     {\"faces\": [[v, ...], ...]} or [[v, ...], ...]: every boundary cycle as\n"
+    "            vertex ids in next order, as `dcel faces` prints (cycle order and\n"
+    "            rotation do not matter, direction does)\n"
+    "  dump      a whole DCEL in the `dcel build` format (validated, then compared up to\n"
+    "            the numbering of half-edges and faces)\n"
+    "  polygons  the bounded faces, each a shell and its holes, as vertex-id or [x, y]\n"
+    "            rings: {\"polygons\": [[shell, hole, ...], ...]} or GeoJSON\n"
+    "  rings     one ring per bounded face, no holes: {\"rings\": [ring, ...]}\n"
+    "docs/checking.md says what each kind is compared with. Either file may be - for\n"
+    "stdin, not both.\n"
     "Exit: 0 agrees, 1 differs (the report: the count, then one line per difference;\n"
     "an ANSWER that cannot be read or parsed is a difference too), 2 usage error or an\n"
     "unreadable or invalid GRAPH. --json prints the report as one JSON object.\n"
@@ -44,8 +48,13 @@ Dcel load_reference(const std::string& path) {
     }
 }
 
-std::string agreement(const Dcel& d, bool dump) {
-    if (dump) {
+std::string agreement(const Dcel& d, check::AnswerKind kind) {
+    if (kind == check::AnswerKind::Polygons || kind == check::AnswerKind::Rings) {
+        std::size_t bounded = d.num_faces() - 1;
+        return "agrees: the answer has the " + std::to_string(bounded) + " bounded faces of the reference as " +
+               std::string(check::answer_kind_name(kind)) + "\n";
+    }
+    if (kind == check::AnswerKind::Dump) {
         return "agrees: the dump is the reference DCEL (" + std::to_string(d.num_vertices()) + " vertices, " +
                std::to_string(d.num_half_edges()) + " half-edges, " + std::to_string(d.num_faces()) +
                " faces) up to numbering\n";
@@ -68,24 +77,23 @@ void add_check_command(CLI::App& app, Action& action) {
     auto graph = std::make_shared<std::string>();
     auto answer = std::make_shared<std::string>();
     auto json = std::make_shared<bool>(false);
+    auto options = std::make_shared<AnswerOptions>();
     cmd->add_option("GRAPH", *graph, "Graph JSON file, or - for stdin")->required();
-    cmd->add_option("ANSWER", *answer, "The answer: faces form or DCEL dump, or - for stdin")->required();
-    cmd->add_flag("--json", *json, "Print the report as JSON: {\"agrees\": ..., \"count\": ..., \"differences\": [...]}");
-    cmd->callback([&action, graph, answer, json] {
-        action = [graph, answer, json] {
+    cmd->add_option("ANSWER", *answer, "The answer (see --answer), or - for stdin")->required();
+    add_answer_options(*cmd, options);
+    cmd->add_flag("--json", *json,
+                  "Print the report as JSON: {\"agrees\": ..., \"count\": ..., \"differences\": [...], \"notes\": [...]}");
+    cmd->callback([&action, graph, answer, json, options] {
+        action = [graph, answer, json, options] {
             if (*graph == "-" && *answer == "-") throw UsageError("check: GRAPH and ANSWER cannot both be - (stdin)");
             const Dcel reference = load_reference(*graph);
             check::Report report;
-            bool dump = false;
+            check::AnswerKind kind = options->kind.value_or(check::AnswerKind::Faces);
             try {
                 const std::string text = read_input(*answer);
-                auto parsed = io::read_answer(text);
-                if (auto* faces = std::get_if<check::FacesAnswer>(&parsed)) {
-                    report = check::compare_faces(reference, *faces);
-                } else {
-                    dump = true;
-                    report = check::compare_dump(reference, std::get<DcelDump>(parsed));
-                }
+                const check::Answer parsed = check::read_answer(text, options->kind);
+                kind = parsed.kind;
+                report = check::compare(reference, parsed, options->conventions);
             } catch (const InvalidInput& e) {
                 report = check::unreadable_answer("ANSWER " + display_name(*answer) + ": " + e.what());
             } catch (const UsageError& e) {
@@ -94,7 +102,9 @@ void add_check_command(CLI::App& app, Action& action) {
             if (*json) {
                 write_stdout(check::report_json(report));
             } else {
-                write_stdout(report.agrees() ? agreement(reference, dump) : check::report_text(report));
+                std::string text = check::report_text(report);
+                if (report.agrees()) text.replace(0, text.find('\n') + 1, agreement(reference, kind));
+                write_stdout(text);
             }
             return report.agrees() ? kExitOk : kExitInvalid;
         };

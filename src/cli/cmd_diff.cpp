@@ -1,114 +1,264 @@
 // dcel diff --impl CMD: differential fuzzing of a foreign implementation
-// against the reference. Options and output here; the case loop and the
-// shrinking in diff_session, the report text in diff_report, the process
-// handling in process.
+// against the reference. Options and output here; the case schedule in
+// diff_cases, the case loop and the shrinking in diff_session, the report in
+// diff_report, the process handling in process.
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 
+#include "answer_options.hpp"
 #include "commands.hpp"
 #include "dcel/build.hpp"
-#include "dcel/io/svg.hpp"
+#include "dcel/check/counterexample_svg.hpp"
 #include "diff_report.hpp"
 #include "diff_session.hpp"
+#include "option_values.hpp"
 
 namespace dcel::cli {
 namespace {
 
 constexpr const char* kFooter = R"(Protocol (docs/checking.md): CMD runs as /bin/sh -c CMD. It reads one graph,
-{"vertices": [[x, y], ...], "edges": [[u, v], ...]}, on stdin and prints
-{"faces": [[v0, v1, ...], ...]} on stdout (every boundary cycle, as the origins
-of its half-edges; isolated vertices are not listed), then exits with status 0.
-With --stream, "CMD --stream" starts once and reads one graph per line, and
-must print each answer on one line; after a crash or a timeout it is started
-again.
+{"vertices": [[x, y], ...], "edges": [[u, v], ...]} on one line (numbers in any
+valid JSON spelling: 3, 3.0, 3e0, -0.0, 5e-324; sometimes the positional form
+[[[x, y], ...], [[u, v], ...]]), and prints its answer on stdout, then exits
+with status 0. The answer is one of the kinds of --answer (detected from its
+shape when not given): every boundary cycle ({"faces": [[v0, v1, ...], ...]}),
+a whole DCEL (the `dcel build` format), the bounded faces as polygons with
+holes (vertex-id or coordinate rings, or GeoJSON), or one ring per bounded
+face. With --stream, "CMD --stream" starts once and reads one graph per line,
+and must print each answer on one line; after a crash or a timeout it is
+started again.
 
 A failure is a crash (a signal; /bin/sh's exit status 128 + N counts as
-signal N), a non-zero exit, a timeout, an answer that is not a faces answer,
-or a wrong answer. The failing graph is shrunk to a small
-one that fails the same way, and reported with the reference answer, what CMD
-said, the first difference and a command line that replays the case.
+signal N), a non-zero exit, a timeout, an answer that cannot be read, or a
+wrong answer. Each failing graph is shrunk to a small one that fails the same
+way, and reported with the reference answer, what CMD said, the differences
+and a command line that replays the case. By default the run stops at the
+first failure; with --keep-going (the default under --time) it goes on,
+groups failures into distinct bugs and shrinks each once.
 
 Exit status: 0 every case agrees; 1 a failure (the report is on stdout);
-2 usage error, including a CMD that /bin/sh cannot run at all (status 126 or
-127 on the first case: not found, not executable).)";
+2 usage error, an unwritable report file, or a CMD that /bin/sh cannot run at
+all (status 126 or 127 on the first case: not found, not executable).)";
 
-std::string svg_title(const DiffOptions& options, const Counterexample& c) {
-    return "dcel diff: " + failure_label(c.outcome) + ", case " + std::to_string(c.spec.number) + ", seed " +
-           std::to_string(options.seed);
+// "a,b,c" -> {a, b, c}, each looked up by `parse`; UsageError naming the option.
+template <class T, class Parse>
+std::vector<T> parse_list(const std::string& option, const std::string& text, Parse parse, const std::string& known) {
+    std::vector<T> out;
+    std::size_t begin = 0;
+    while (begin <= text.size()) {
+        const std::size_t end = std::min(text.find(',', begin), text.size());
+        const std::string word = text.substr(begin, end - begin);
+        const std::optional<T> v = parse(word);
+        if (!v) throw UsageError(option + ": unknown name \"" + word + "\"; the names are " + known);
+        if (std::find(out.begin(), out.end(), *v) == out.end()) out.push_back(*v);
+        begin = end + 1;
+    }
+    return out;
 }
 
-void write_svg(const std::string& path, const DiffOptions& options, const Counterexample& c) {
-    io::SvgOptions svg;
-    svg.title = svg_title(options, c);
-    if (c.outcome.kind == FailureKind::WrongAnswer) {
-        const auto& cycle = c.outcome.report.differences.front().vertices;
-        if (!cycle.empty()) svg.highlight_cycles.push_back(cycle);
+template <class T>
+std::vector<T> without(std::span<const T> all, const std::vector<T>& excluded) {
+    std::vector<T> out;
+    for (const T& x : all) {
+        if (std::find(excluded.begin(), excluded.end(), x) == excluded.end()) out.push_back(x);
     }
-    std::ofstream out(path, std::ios::binary);
-    out << io::render_svg(build(c.graph), svg);
-    if (!out.flush()) throw UsageError("cannot write " + path);
+    return out;
+}
+
+std::string names_of_families() {
+    std::string s;
+    for (const gen::Family f : gen::all_families()) s += (s.empty() ? "" : ", ") + std::string(gen::family_name(f));
+    return s;
+}
+
+std::string names_of_classes() {
+    std::string s;
+    for (const gen::CoordinateClass c : gen::all_coordinate_classes()) {
+        s += (s.empty() ? "" : ", ") + std::string(gen::coordinate_class_name(c));
+    }
+    return s;
+}
+
+// FILE for failure 1, FILE-2.svg style names for the others.
+std::string numbered(const std::string& path, std::size_t id) {
+    if (id == 1) return path;
+    const std::size_t dot = path.rfind('.');
+    const std::size_t slash = path.rfind('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + "-" + std::to_string(id);
+    return path.substr(0, dot) + "-" + std::to_string(id) + path.substr(dot);
+}
+
+// The counterexample with the reference and the answer side by side, and an
+// inset at each vertex where the answer turns differently (docs/pictures.md).
+std::string svg_of(const DiffOptions& options, const Failure& f) {
+    const Counterexample& c = f.example;
+    const Dcel reference = build(c.graph);
+    check::CounterexampleDrawing drawing{&c.graph, &reference};
+    drawing.title = "dcel diff: " + failure_label(c.outcome) + ", case " + std::to_string(c.original.spec.number) +
+                    ", seed " + std::to_string(options.schedule.seed);
+    drawing.answer_name = "the command: " + options.impl;
+    drawing.answer_cycles = c.outcome.answer_cycles;
+    drawing.answer_polygons = c.outcome.answer_polygons;
+    return check::render_counterexample_svg(drawing);
+}
+
+struct RawOptions {
+    std::string cases, seed = "1", time, max_vertices, large_vertices, timeout_ms = "5000", shrink_time = "20", only_case,
+                       max_failures = "20", print_case;
+    std::string families, exclude_families, coordinates, exclude_coordinates;
+    std::string svg, report, junit;
+    bool keep_going = false, stop_at_first = false;
+};
+
+DiffOptions resolve(const RawOptions& raw, DiffOptions o) {
+    constexpr std::uint64_t kMaxCases = std::uint64_t{1} << 40;
+    if (!raw.cases.empty()) o.cases = parse_count("--cases", raw.cases, 1, kMaxCases);
+    o.schedule.seed = parse_count("--seed", raw.seed, 0, UINT64_MAX);
+    if (!raw.time.empty()) o.time = parse_seconds("--time", raw.time, 0.001, 1e7);
+    if (!raw.max_vertices.empty()) o.schedule.max_vertices = parse_count("--max-vertices", raw.max_vertices, 1, 100000);
+    if (!raw.large_vertices.empty()) {
+        o.schedule.large_vertices = parse_count("--large-vertices", raw.large_vertices, 0, 1000000);
+    }
+    o.limits.timeout = std::chrono::milliseconds(parse_count("--timeout-ms", raw.timeout_ms, 1, 86400000));
+    o.shrink_time = parse_seconds("--shrink-time", raw.shrink_time, 0, 1e6);
+    if (!raw.only_case.empty()) o.only_case = parse_count("--case", raw.only_case, 0, kMaxCases);
+    o.max_failures = parse_count("--max-failures", raw.max_failures, 1, 1000);
+    if (!raw.families.empty() && !raw.exclude_families.empty()) {
+        throw UsageError("--families and --exclude-families: give one of them");
+    }
+    if (!raw.coordinates.empty() && !raw.exclude_coordinates.empty()) {
+        throw UsageError("--coordinates and --exclude-coordinates: give one of them");
+    }
+    auto family = [](const std::string& w) { return gen::family_from_name(w); };
+    auto coordinate = [](const std::string& w) { return gen::coordinate_class_from_name(w); };
+    if (!raw.families.empty()) {
+        o.schedule.families = parse_list<gen::Family>("--families", raw.families, family, names_of_families());
+    }
+    if (!raw.exclude_families.empty()) {
+        o.schedule.families = without(
+            gen::all_families(),
+            parse_list<gen::Family>("--exclude-families", raw.exclude_families, family, names_of_families()));
+        if (o.schedule.families.empty()) throw UsageError("--exclude-families: no family is left");
+    }
+    if (!raw.coordinates.empty()) {
+        o.schedule.classes = parse_list<gen::CoordinateClass>("--coordinates", raw.coordinates, coordinate,
+                                                              names_of_classes());
+    }
+    if (!raw.exclude_coordinates.empty()) {
+        o.schedule.classes = without(gen::all_coordinate_classes(),
+                                     parse_list<gen::CoordinateClass>("--exclude-coordinates", raw.exclude_coordinates,
+                                                                      coordinate, names_of_classes()));
+        if (o.schedule.classes.empty()) throw UsageError("--exclude-coordinates: no class is left");
+    }
+    if (o.time && !o.cases) o.cases.reset();  // --time alone: as many as fit
+    if (!o.time && !o.cases) o.cases = 200;
+    o.keep_going = (raw.keep_going || o.time.has_value()) && !raw.stop_at_first;
+    if (o.only_case) o.keep_going = false;
+    o.schedule.one_line = true;  // one graph per line, in both modes
+    return o;
 }
 
 }  // namespace
 
 void add_diff_command(CLI::App& app, Action& action) {
     auto* cmd = app.add_subcommand("diff",
-                                   "Differential fuzzing: run CMD on generated graphs, compare with the "
-                                   "reference, shrink the first failure");
+                                   "Differential fuzzing: run CMD on generated graphs, compare its answers with the "
+                                   "reference, shrink each failure");
     cmd->footer(kFooter);
     auto options = std::make_shared<DiffOptions>();
-    auto cases = std::make_shared<std::size_t>(200);
-    auto time_s = std::make_shared<double>(0);
-    auto timeout_ms = std::make_shared<long>(5000);
-    auto shrink_s = std::make_shared<double>(20);
-    auto only_case = std::make_shared<std::size_t>(0);
-    auto svg = std::make_shared<std::string>();
-    cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")
-        ->required()
-        ->type_name("CMD");
-    auto* cases_opt =
-        cmd->add_option("--cases", *cases, "Number of cases (default 200; unlimited with --time)")->type_name("N");
-    cmd->add_option("--seed", options->seed, "Seed of the case schedule (default 1)")->type_name("S");
-    auto* time_opt = cmd->add_option("--time", *time_s, "Stop looking for a failure after T seconds")
-                         ->check(CLI::PositiveNumber)
-                         ->type_name("T");
-    cmd->add_option("--max-vertices", options->max_vertices, "Largest graph size asked of the generators (default 60)")
-        ->check(CLI::Range(std::size_t{1}, std::size_t{100000}))
-        ->type_name("K");
+    auto raw = std::make_shared<RawOptions>();
+    auto answer = std::make_shared<AnswerOptions>();
+    auto impl = cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")
+                    ->type_name("CMD");
+    cmd->add_option("--cases", raw->cases, "Number of cases (default 200; unlimited with --time)")->type_name("N");
+    cmd->add_option("--seed", raw->seed, "Seed of the case schedule (default 1)")->type_name("S");
+    cmd->add_option("--time", raw->time, "Stop looking for failures after T seconds (implies --keep-going)")->type_name("T");
+    cmd->add_option("--max-vertices", raw->max_vertices, "Largest size of the growing cases (default 60)")->type_name("K");
+    cmd->add_option("--large-vertices", raw->large_vertices, "Size of every 50th case, a large one (default 2000; 0: none)")
+        ->type_name("L");
+    cmd->add_option("--families", raw->families, "Only these generator families, comma-separated")->type_name("LIST");
+    cmd->add_option("--exclude-families", raw->exclude_families, "Every generator family but these")->type_name("LIST");
+    cmd->add_option("--coordinates", raw->coordinates,
+                    "Only these coordinate classes: small-integers, normal, huge, tiny, subnormal")
+        ->type_name("LIST");
+    cmd->add_option("--exclude-coordinates", raw->exclude_coordinates, "Every coordinate class but these")
+        ->type_name("LIST");
+    add_answer_options(*cmd, answer);
     cmd->add_flag("--stream", options->stream,
                   "Start \"CMD --stream\" once; one graph per line in, one answer per line out");
-    cmd->add_option("--timeout-ms", *timeout_ms, "Time allowed per case, in milliseconds (default 5000)")
-        ->check(CLI::Range(1L, 86400000L))
+    cmd->add_option("--timeout-ms", raw->timeout_ms, "Time allowed per case, in milliseconds (default 5000)")
         ->type_name("M");
-    cmd->add_option("--shrink-time", *shrink_s, "Time allowed for shrinking a failure, in seconds (default 20)")
-        ->check(CLI::NonNegativeNumber)
+    cmd->add_option("--shrink-time", raw->shrink_time, "Time allowed for shrinking each failure, in seconds (default 20)")
         ->type_name("T");
-    auto* case_opt =
-        cmd->add_option("--case", *only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
-    cmd->add_option("--svg", *svg, "On a failure, draw the counterexample into FILE (SVG)")->type_name("FILE");
-    cmd->callback([&action, options, cases, cases_opt, time_s, time_opt, timeout_ms, shrink_s, only_case, case_opt, svg] {
-        action = [=] {
+    cmd->add_flag("--keep-going", raw->keep_going,
+                  "Go on after a failure: group failures into distinct bugs, shrink each once, end with a summary");
+    cmd->add_flag("--stop-at-first", raw->stop_at_first, "Stop at the first failure, also under --time");
+    cmd->add_option("--max-failures", raw->max_failures, "With --keep-going, stop after N distinct failures (default 20)")
+        ->type_name("N");
+    cmd->add_option("--case", raw->only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
+    cmd->add_option("--print-case", raw->print_case, "Print case N's graph, its exact bytes, and run nothing")
+        ->type_name("N");
+    cmd->add_option("--report", raw->report, "Write the report as JSON to FILE (docs/diff-report.schema.json)")
+        ->type_name("FILE");
+    cmd->add_option("--junit", raw->junit, "Write JUnit XML to FILE: one test case per distinct failure")->type_name("FILE");
+    cmd->add_option("--svg", raw->svg, "Draw each counterexample into FILE (failure k > 1: FILE-k.svg)")->type_name("FILE");
+    cmd->callback([&action, options, raw, answer, impl] {
+        action = [options, raw, answer, impl] {
             DiffOptions o = *options;
-            o.limits.timeout = std::chrono::milliseconds(*timeout_ms);
-            o.shrink_time = std::chrono::milliseconds(static_cast<long>(*shrink_s * 1000));
-            if (*time_opt) o.time = std::chrono::milliseconds(static_cast<long>(*time_s * 1000));
-            if (*cases_opt || !*time_opt) o.cases = *cases;  // --time alone: as many as fit
-            if (*case_opt) o.only_case = *only_case;
-            Progress progress;
-            if (::isatty(STDERR_FILENO) != 0) {
-                progress = [](const std::string& line) { std::fprintf(stderr, "\r\x1b[K%s", line.c_str()); };
+            o.answer = *answer;
+            try {
+                o = resolve(*raw, std::move(o));
+                if (!raw->print_case.empty()) {
+                    const std::size_t n = parse_count("--print-case", raw->print_case, 0, std::uint64_t{1} << 40);
+                    const std::optional<Case> c = make_case(o.schedule, n);
+                    if (!c)
+                        throw UsageError("case " + std::to_string(n) + " has no graph in the allowed coordinate classes");
+                    write_stdout(c->text);
+                    return kExitOk;
+                }
+                if (impl->count() == 0) throw UsageError("--impl CMD is required (the program to check)");
+                if (o.impl.find_first_not_of(" \t\n") == std::string::npos) {
+                    throw UsageError(
+                        "--impl: the command is empty; give the program to check, e.g. --impl 'python3 mine.py'");
+                }
+            } catch (const UsageError& e) {
+                // The same shape as the errors CLI11 reports for the other commands.
+                throw UsageError(std::string("diff: ") + e.what() + " (dcel diff --help)");
             }
+            const bool tty = ::isatty(STDERR_FILENO) != 0;
+            auto last = std::chrono::steady_clock::now();
+            Progress progress = [tty, &last](const std::string& line) {
+                if (tty) {
+                    std::fprintf(stderr, "\r\x1b[K%s", line.c_str());
+                    return;
+                }
+                // Not a terminal (a CI log): a line every few seconds, so a long run is not silent.
+                const auto now = std::chrono::steady_clock::now();
+                if (now - last < std::chrono::seconds(5)) return;
+                last = now;
+                std::fprintf(stderr, "dcel diff: %s\n", line.c_str());
+            };
             const DiffResult result = run_diff(o, progress);
-            if (progress) std::fprintf(stderr, "\r\x1b[K");
-            std::string report = format_report(o, result);
-            if (result.failure && !svg->empty()) {
-                write_svg(*svg, o, *result.failure);
-                report += "drawn in " + *svg + "\n";
+            if (tty) std::fprintf(stderr, "\r\x1b[K");
+            write_stdout(format_report(o, result));
+            // Files after the report: a report file that cannot be written
+            // loses nothing that stdout already has.
+            if (!raw->report.empty()) write_file(raw->report, report_json(o, result));
+            if (!raw->junit.empty()) write_file(raw->junit, report_junit(o, result));
+            if (!raw->svg.empty()) {
+                for (const Failure& f : result.failures) {
+                    const std::string path = numbered(raw->svg, f.id);
+                    write_file(path, svg_of(o, f));
+                    write_stdout("failure " + std::to_string(f.id) + " drawn in " + path + "\n");
+                }
             }
-            write_stdout(report);
-            return result.failure ? kExitInvalid : kExitOk;
+            return result.failures.empty() ? kExitOk : kExitInvalid;
         };
     });
 }

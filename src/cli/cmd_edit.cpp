@@ -4,8 +4,6 @@
 // Prints one result line per step, then every face with its name and outer
 // cycle, then the resulting graph (also written to --graph-out FILE).
 // A refused edit stops the script: exit 1, the reason on stderr.
-#include <fstream>
-
 #include "commands.hpp"
 #include "dcel/build.hpp"
 #include "dcel/edit.hpp"
@@ -63,11 +61,11 @@ public:
         try {
             switch (s.op) {
                 case Op::Name: {
-                    name_faces(d_, s.names, where(s), names_);
+                    const std::vector<FaceId> named = name_faces(d_, s.names, where(s), names_);
                     std::string faces;
-                    for (const NamedPoint& n : s.names) {
-                        faces += (faces.empty() ? "" : ", ") + json_string(n.name) + ": " +
-                                 std::to_string(locate_by_scan(d_, n.at).face.index());
+                    for (std::size_t i = 0; i < named.size(); ++i) {
+                        faces += (faces.empty() ? "" : ", ") + json_string(s.names[i].name) + ": " +
+                                 std::to_string(named[i].index());
                     }
                     return op + ", \"faces\": {" + faces + "}}";
                 }
@@ -139,8 +137,9 @@ void add_edit_command(CLI::App& app, Action& action) {
     cmd->add_flag("--check", *check, "Run validate() after every edit (O(n log n) each)");
     cmd->callback([&action, path, script_path, graph_out, check] {
         action = [path, script_path, graph_out, check] {
+            require_one_stdin({{"GRAPH", path.get()}, {"SCRIPT", script_path.get()}});
             const PlanarGraph g = load_graph(*path);
-            Dcel d = with_source(*path, [&] { return build(g); });
+            Dcel d = build_dcel(*path, g);
             const std::string text = read_input(*script_path);
             const EditScript script = with_source(*script_path, [&] { return read_edit_script(text); });
             FaceNames names(d);
@@ -164,11 +163,7 @@ void add_edit_command(CLI::App& app, Action& action) {
             }
             std::string graph = io::write_graph(to_graph(d));
             out += "\n],\n\"graph\": " + graph.substr(0, graph.size() - 1) + "}\n";
-            if (!graph_out->empty()) {
-                std::ofstream file(*graph_out, std::ios::binary);
-                file << graph;
-                if (!file.flush()) throw UsageError("cannot write " + *graph_out);
-            }
+            if (!graph_out->empty()) write_file(*graph_out, graph);
             write_stdout(out);
             return kExitOk;
         };

@@ -1,9 +1,8 @@
 // dcel gen [--family F] [--seed S] [--vertices N]: a random valid graph from
 // the shared generators (dcel::gen), as graph JSON on one line. The same
 // arguments give the same graph on every platform.
-#include <charconv>
-
 #include "commands.hpp"
+#include "dcel/format.hpp"
 #include "dcel/gen/generate.hpp"
 #include "dcel/io/graph_json.hpp"
 
@@ -34,25 +33,24 @@ void add_gen_command(CLI::App& app, Action& action) {
                 "Example:\n"
                 "  dcel gen --family nested-polygons --seed 7 --vertices 30 | dcel faces");
     auto family = std::make_shared<std::string>("random-segments");
-    auto seed = std::make_shared<std::string>("0");
+    auto seed = std::make_shared<std::uint64_t>(0);
     auto vertices = std::make_shared<std::size_t>(16);
     cmd->add_option("--family", *family, "Graph family (see below)")->capture_default_str();
-    cmd->add_option("--seed", *seed, "Seed (unsigned 64-bit)")->type_name("UINT")->capture_default_str();
-    cmd->add_option("--vertices", *vertices, "Target number of vertices, at most 10000")->capture_default_str();
+    cmd->add_option("--seed", *seed, "Seed (unsigned 64-bit)")
+        ->type_name("UINT")
+        ->transform(unsigned_in())
+        ->capture_default_str();
+    cmd->add_option("--vertices", *vertices, "Target number of vertices, at most 10000")
+        ->type_name("N")
+        ->transform(unsigned_in(0, kMaxVertices))
+        ->capture_default_str();
     cmd->callback([&action, family, seed, vertices] {
         action = [family, seed, vertices] {
             const auto f = gen::family_from_name(*family);
-            if (!f) throw UsageError("gen: unknown family \"" + *family + "\"; the families are " + family_list());
-            std::uint64_t s = 0;
-            const char* end = seed->data() + seed->size();
-            if (const auto r = std::from_chars(seed->data(), end, s); r.ec != std::errc() || r.ptr != end) {
-                throw UsageError("gen: --seed: expected an unsigned 64-bit integer, found \"" + *seed + "\"");
-            }
-            if (*vertices > kMaxVertices) {
-                throw UsageError("gen: --vertices " + std::to_string(*vertices) + " is more than " +
-                                 std::to_string(kMaxVertices));
-            }
-            write_stdout(io::write_graph(gen::generate({*f, s, *vertices})));
+            if (!f)
+                throw UsageError("gen: unknown family " + quote_for_message(*family) + "; the families are " +
+                                 family_list());
+            write_stdout(io::write_graph(gen::generate({*f, *seed, *vertices})));
             return kExitOk;
         };
     });

@@ -31,14 +31,15 @@ void add_locate_command(CLI::App& app, Action& action) {
     cmd->callback([&action, path, xy, names_path, points_path] {
         if (xy->empty() == points_path->empty()) throw CLI::ValidationError("give either X Y or --points FILE");
         action = [path, xy, names_path, points_path] {
+            require_one_stdin({{"GRAPH", path.get()}, {"--names", names_path.get()}, {"--points", points_path.get()}});
+            const Point p = xy->empty() ? Point{} : Point{parse_coordinate((*xy)[0], "X"), parse_coordinate((*xy)[1], "Y")};
             const PlanarGraph g = load_graph(*path);
-            const Dcel d = with_source(*path, [&] { return build(g); });
+            const Dcel d = build_dcel(*path, g);
             FaceNames names(d);
             const std::vector<NamedPoint> named = load_face_names(*names_path);
-            name_faces(d, named, *names_path, names);
+            name_faces(d, named, display_name(*names_path), names);
             const FaceNames* shown = named.empty() ? nullptr : &names;
             if (!xy->empty()) {
-                const Point p{parse_coordinate((*xy)[0], "X"), parse_coordinate((*xy)[1], "Y")};
                 write_stdout("{\"point\": " + json_point(p) + ", " + json_location_members(d, locate_by_scan(d, p), shown) +
                              "}\n");
                 return kExitOk;

@@ -22,14 +22,15 @@ void add_stab_command(CLI::App& app, Action& action) {
     cmd->add_flag("--line", *line, "The whole line through the two points (they must differ)");
     cmd->callback([&action, path, coords, names_path, line] {
         action = [path, coords, names_path, line] {
+            require_one_stdin({{"GRAPH", path.get()}, {"--names", names_path.get()}});
             const Point a{parse_coordinate((*coords)[0], "X1"), parse_coordinate((*coords)[1], "Y1")};
             const Point b{parse_coordinate((*coords)[2], "X2"), parse_coordinate((*coords)[3], "Y2")};
             if (*line && a == b) throw UsageError("--line needs two different points");
             const PlanarGraph g = load_graph(*path);
-            const Dcel d = with_source(*path, [&] { return build(g); });
+            const Dcel d = build_dcel(*path, g);
             FaceNames names(d);
             const std::vector<NamedPoint> named = load_face_names(*names_path);
-            name_faces(d, named, *names_path, names);
+            name_faces(d, named, display_name(*names_path), names);
             const std::vector<StabPiece> pieces = *line ? stab_line(d, a, b) : stab_segment(d, a, b);
             const std::string head = *line ? "{\"line\": [" + json_point(a) + ", " + json_point(b) + "], "
                                            : "{\"from\": " + json_point(a) + ", \"to\": " + json_point(b) + ", ";

@@ -1,6 +1,7 @@
 #include "diff_cases.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace dcel::cli {
 namespace {
@@ -13,19 +14,101 @@ std::uint64_t mix(std::uint64_t x) {
     return x ^ (x >> 31U);
 }
 
+constexpr std::size_t kLargeEvery = 50;
+
+// The families whose large graphs have large shapes, in the order large cases
+// take them: degree, long cycles, many faces, many components.
+constexpr std::array<gen::Family, 9> kLarge{
+    gen::Family::Star,           gen::Family::Tree,           gen::Family::Triangulation,
+    gen::Family::NestedPolygons, gen::Family::CollinearChain, gen::Family::Comb,
+    gen::Family::GridWithHoles,  gen::Family::RandomSegments, gen::Family::Components,
+};
+
+// Small integers 4, normal 3, huge 1, tiny 1, subnormal 1, among the allowed.
+gen::CoordinateClass draw_class(const Schedule& s, std::uint64_t seed) {
+    static constexpr std::array<std::uint64_t, 5> kWeight{4, 3, 1, 1, 1};
+    std::uint64_t total = 0;
+    for (const gen::CoordinateClass c : gen::all_coordinate_classes()) {
+        if (s.allows(c)) total += kWeight[static_cast<std::size_t>(c)];
+    }
+    std::uint64_t pick = mix(seed) % std::max<std::uint64_t>(total, 1);
+    for (const gen::CoordinateClass c : gen::all_coordinate_classes()) {
+        if (!s.allows(c)) continue;
+        const std::uint64_t w = kWeight[static_cast<std::size_t>(c)];
+        if (pick < w) return c;
+        pick -= w;
+    }
+    return gen::CoordinateClass::SmallIntegers;
+}
+
 }  // namespace
 
-CaseSpec case_spec(std::uint64_t run_seed, std::size_t i, std::size_t max_vertices) {
-    const auto families = gen::all_families();
+std::vector<gen::Family> Schedule::chosen_families() const {
+    if (!families.empty()) return families;
+    const auto all = gen::all_families();
+    return {all.begin(), all.end()};
+}
+
+bool Schedule::allows(gen::CoordinateClass c) const {
+    return classes.empty() || std::find(classes.begin(), classes.end(), c) != classes.end();
+}
+
+CaseSpec case_spec(const Schedule& s, std::size_t i) {
+    const std::vector<gen::Family> families = s.chosen_families();
     const std::size_t round = i / families.size();
+    const std::uint64_t seed = mix(mix(s.seed) ^ i);
     CaseSpec spec;
     spec.number = i;
+    spec.params.seed = seed;
     spec.params.family = families[i % families.size()];
     // Small graphs first: most bugs show on a handful of vertices, and a
     // failure found small needs little shrinking.
-    spec.params.vertices = std::clamp<std::size_t>(2 + 3 * round, 1, std::max<std::size_t>(max_vertices, 1));
-    spec.params.seed = mix(mix(run_seed) ^ i);
+    spec.params.vertices = std::clamp<std::size_t>(2 + 3 * round, 1, std::max<std::size_t>(s.max_vertices, 1));
+    if (s.large_vertices > 0 && i % kLargeEvery == kLargeEvery - 1) {
+        std::vector<gen::Family> large;
+        for (const gen::Family f : kLarge) {
+            if (std::find(families.begin(), families.end(), f) != families.end()) large.push_back(f);
+        }
+        if (!large.empty()) {
+            spec.large = true;
+            spec.params.family = large[(i / kLargeEvery) % large.size()];
+            spec.params.vertices = s.large_vertices;
+        }
+    }
+    spec.coordinate_seed = mix(seed ^ 0xc00dULL);
+    const bool first_round = i < families.size();
+    spec.coordinates = first_round && s.allows(gen::CoordinateClass::SmallIntegers) ? gen::CoordinateClass::SmallIntegers
+                                                                                    : draw_class(s, spec.coordinate_seed);
+    const std::uint64_t spelling_seed = mix(seed ^ 0x5be11ULL);
+    spec.spelling = first_round || mix(spelling_seed) % 10 < 4 ? gen::Spelling::plain()
+                                                               : gen::Spelling::random(spelling_seed, s.one_line);
     return spec;
 }
+
+std::optional<Case> make_case(const Schedule& s, std::size_t i) {
+    Case c;
+    c.spec = case_spec(s, i);
+    gen::Params p = c.spec.params;
+    // Near-degenerate graphs come with their own coordinates: a few tries for
+    // one in an allowed class. Every other family gives small integers, which
+    // are then mapped into the class the case asks for.
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        PlanarGraph g = gen::generate(p);
+        if (std::optional<PlanarGraph> mapped = gen::to_coordinate_class(g, c.spec.coordinates, c.spec.coordinate_seed)) {
+            g = std::move(*mapped);
+        }
+        c.coordinates = gen::classify(g);
+        if (s.allows(c.coordinates)) {
+            c.spec.params = p;
+            c.graph = std::move(g);
+            c.text = spell(c.graph, c.spec);
+            return c;
+        }
+        p.seed = mix(p.seed);
+    }
+    return std::nullopt;
+}
+
+std::string spell(const PlanarGraph& g, const CaseSpec& spec) { return gen::write_spelled(g, spec.spelling); }
 
 }  // namespace dcel::cli

@@ -1,24 +1,65 @@
-// The case schedule of `dcel diff`: case i is a graph from dcel::gen, with
-// the family cycling through every family and the size growing with i, all
-// determined by (run seed, i, max vertices). So a case replays from its
-// number alone, whatever --cases or --time the run had.
+// The case schedule of `dcel diff`: case i is a graph from dcel::gen, put
+// into a coordinate class and written in a JSON spelling, all determined by
+// (run seed, i, the schedule options). So a case replays byte for byte from
+// its number alone, whatever --cases or --time the run had.
+//
+// The schedule: the family cycles through the chosen families; the size
+// starts at 2 and grows by 3 every round of families, up to --max-vertices;
+// every 50th case (49, 99, ...) is a large one of --large-vertices vertices
+// from the families with large shapes (a star of high degree, trees and
+// chains with boundary cycles of thousands of half-edges, ...). The first
+// round uses small integers written plainly; after that each case draws a
+// coordinate class (small integers 4 in 10, normal 3, huge, tiny and
+// subnormal 1 each) and, 6 times in 10, a varied spelling.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
 
+#include "dcel/gen/coordinates.hpp"
 #include "dcel/gen/generate.hpp"
+#include "dcel/gen/spelling.hpp"
 
 namespace dcel::cli {
+
+struct Schedule {
+    std::uint64_t seed = 1;
+    std::size_t max_vertices = 60;              // the ramp's cap
+    std::size_t large_vertices = 2000;          // the size of every 50th case; 0: no large cases
+    std::vector<gen::Family> families;          // in schedule order; empty: all
+    std::vector<gen::CoordinateClass> classes;  // allowed; empty: all
+    bool one_line = false;                      // --stream: no newlines inside a graph
+    [[nodiscard]] std::vector<gen::Family> chosen_families() const;
+    [[nodiscard]] bool allows(gen::CoordinateClass c) const;
+};
 
 struct CaseSpec {
     std::size_t number = 0;  // i, counted from 0
     gen::Params params;      // family, seed and target size handed to gen::generate
+    bool large = false;
+    gen::CoordinateClass coordinates = gen::CoordinateClass::SmallIntegers;  // asked for
+    std::uint64_t coordinate_seed = 0;
+    gen::Spelling spelling;
 };
 
-// Family i mod (number of families); target size 2, 2, ..., growing by 3
-// every round of all families, capped at max_vertices; the generator seed is
-// mixed from the run seed and i.
-[[nodiscard]] CaseSpec case_spec(std::uint64_t run_seed, std::size_t i, std::size_t max_vertices);
+[[nodiscard]] CaseSpec case_spec(const Schedule& s, std::size_t i);
+
+struct Case {
+    CaseSpec spec;
+    PlanarGraph graph;
+    gen::CoordinateClass coordinates = gen::CoordinateClass::SmallIntegers;  // what it has
+    std::string text;                                                        // the exact bytes the command reads
+};
+
+// The case's graph, in its class and spelling; nothing when the schedule's
+// classes exclude every graph the near-degenerate family offered for it.
+[[nodiscard]] std::optional<Case> make_case(const Schedule& s, std::size_t i);
+
+// A graph written in a case's spelling (shrunk graphs keep the spelling of
+// the case they came from, so a reader's bug stays visible).
+[[nodiscard]] std::string spell(const PlanarGraph& g, const CaseSpec& spec);
 
 }  // namespace dcel::cli

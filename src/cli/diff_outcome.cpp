@@ -1,7 +1,8 @@
 #include "diff_outcome.hpp"
 
+#include <algorithm>
+
 #include "dcel/error.hpp"
-#include "dcel/io/dcel_json.hpp"
 
 namespace dcel::cli {
 
@@ -51,9 +52,92 @@ Outcome failed(FailureKind kind, std::string what, const ProcessResult& run) {
     return o;
 }
 
+constexpr std::size_t kMaxDrawnIds = 100000;  // a drawing of more says nothing; keep memory small
+
+// A dump's next-cycles as vertex cycles, where its references allow a walk.
+std::vector<std::vector<Index>> dump_cycles(const DcelDump& d) {
+    std::vector<std::vector<Index>> out;
+    const std::size_t n = d.half_edges.size();
+    if (n > kMaxDrawnIds) return out;
+    std::vector<char> seen(n, 0);
+    for (std::size_t h = 0; h < n; ++h) {
+        std::vector<Index> cycle;
+        for (std::size_t x = h, steps = 0; x < n && seen[x] == 0 && steps < n; ++steps) {
+            seen[x] = 1;
+            if (d.half_edges[x].origin.is_null()) break;
+            cycle.push_back(d.half_edges[x].origin.index());
+            x = d.half_edges[x].next.index();
+        }
+        if (!cycle.empty()) out.push_back(std::move(cycle));
+    }
+    return out;
+}
+
+// Polygons and rings by vertex id (coordinates matched exactly; a point that
+// is no vertex leaves its ring out).
+std::vector<std::vector<std::vector<Index>>> regions_of(const check::Answer& a, const Dcel& reference,
+                                                        const check::Conventions& c) {
+    std::vector<std::vector<std::vector<Index>>> out;
+    const check::RegionAnswer& r = a.regions;
+    if (a.kind != check::AnswerKind::Polygons && a.kind != check::AnswerKind::Rings) return out;
+    if (r.ids.size() + r.points.size() > kMaxDrawnIds) return out;
+    auto vertex_at = [&](Point p) {
+        for (Index v = 0; v < reference.num_vertices(); ++v) {
+            if (reference.point(VertexId(v)) == p) return v;
+        }
+        return kNoIndex;
+    };
+    for (std::size_t p = 0; p < r.polygon_count(); ++p) {
+        std::vector<std::vector<Index>> polygon;
+        for (std::size_t k = r.polygon_begin[p]; k < r.polygon_begin[p + 1]; ++k) {
+            std::vector<Index> ring;
+            bool known = true;
+            for (std::size_t i = r.ring_begin[k]; i < r.ring_begin[k + 1]; ++i) {
+                Index v = r.by_points ? vertex_at(r.points[i]) : r.ids[i];
+                if (!r.by_points && c.one_based) v = v == 0 ? kNoIndex : v - 1;
+                known = known && v < reference.num_vertices();
+                ring.push_back(v);
+            }
+            if (ring.size() >= 2 && ring.front() == ring.back()) ring.pop_back();
+            if (known) polygon.push_back(std::move(ring));
+        }
+        if (!polygon.empty()) out.push_back(std::move(polygon));
+    }
+    return out;
+}
+
+// The answer's cycles, for drawing: faces as given (1-based ids shifted, a
+// repeated first vertex dropped, reversed for faces on the right), a dump's
+// next-cycles.
+std::vector<std::vector<Index>> cycles_of(const check::Answer& a, const check::Conventions& c) {
+    std::vector<std::vector<Index>> out;
+    if (a.kind == check::AnswerKind::Dump) return dump_cycles(a.dump);
+    if (a.kind != check::AnswerKind::Faces || a.cycles.ids.size() > kMaxDrawnIds) return out;
+    for (std::size_t i = 0; i < a.cycles.size(); ++i) {
+        const std::span<const Index> given = a.cycles[i];
+        std::vector<Index> vs(given.begin(), given.end());
+        if (c.one_based) {
+            for (Index& v : vs) v = v == 0 ? kNoIndex : v - 1;
+        }
+        if (vs.size() >= 2 && vs.front() == vs.back()) vs.pop_back();
+        if (c.face_on_right && !vs.empty()) std::reverse(vs.begin() + 1, vs.end());
+        out.push_back(std::move(vs));
+    }
+    return out;
+}
+
+std::string kinds_text(const std::vector<check::AnswerKind>& kinds) {
+    std::string s;
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        s += i == 0 ? "" : (i + 1 == kinds.size() ? " and " : ", ");
+        s += check::answer_kind_name(kinds[i]);
+    }
+    return s;
+}
+
 }  // namespace
 
-Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits) {
+Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits, AnswerJudging& judging) {
     switch (run.end) {
         case ProcessEnd::Signalled: return failed(FailureKind::Crash, describe_end(run, limits), run);
         case ProcessEnd::TimedOut: return failed(FailureKind::Timeout, describe_end(run, limits), run);
@@ -73,23 +157,51 @@ Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimi
         return failed(FailureKind::Unparsable,
                       run.out.empty() ? "printed nothing on stdout" : "printed only blanks on stdout", run);
     }
-    check::FacesAnswer answer;
+    const std::optional<check::AnswerKind> given = judging.options.kind;
+    check::Answer answer;
     try {
-        answer = io::read_faces_answer(run.out);
+        answer = check::read_answer(run.out, given);
     } catch (const InvalidInput& e) {
-        return failed(FailureKind::Unparsable,
-                      std::string("not a faces answer: ") + e.what() + "; it begins \"" + printable(run.out, 80) + "\"",
-                      run);
+        const std::string what = given ? "not a " + std::string(check::answer_kind_name(*given)) + " answer: "
+                                       : std::string("not an answer: ");
+        return failed(FailureKind::Unparsable, what + e.what() + "; it begins \"" + printable(run.out, 80) + "\"", run);
     }
-    Outcome o;
-    o.run = run;
-    o.report = check::compare_faces(reference, answer);
-    if (!o.report.agrees()) {
-        o.agrees = false;
-        o.kind = FailureKind::WrongAnswer;
-        o.what = o.report.differences.front().message;
+    // The kinds the shape fits, those that agreed most often so far first.
+    std::vector<check::AnswerKind> order = answer.fits;
+    std::stable_sort(order.begin(), order.end(), [&](check::AnswerKind a, check::AnswerKind b) {
+        return judging.agreed_as[static_cast<std::size_t>(a)] > judging.agreed_as[static_cast<std::size_t>(b)];
+    });
+    Outcome worst;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        check::Answer as = order[i] == answer.kind ? answer : check::read_answer(run.out, order[i]);
+        if (!given) as.detected_from.clear();  // the report says what was assumed, below
+        check::Report report = check::compare(reference, as, judging.options.conventions);
+        if (report.agrees()) {
+            ++judging.agreed_as[static_cast<std::size_t>(order[i])];
+            Outcome o;
+            o.run = run;
+            o.answer_kind = order[i];
+            return o;
+        }
+        if (i != 0) continue;
+        worst.run = run;
+        worst.agrees = false;
+        worst.kind = FailureKind::WrongAnswer;
+        worst.answer_kind = order[i];
+        worst.what = report.differences.front().message;
+        worst.answer_cycles = cycles_of(as, judging.options.conventions);
+        worst.answer_polygons = regions_of(as, reference, judging.options.conventions);
+        worst.report = std::move(report);
     }
-    return o;
+    if (!given && (order.size() > 1 || answer.detected_from.rfind("an object with", 0) != 0)) {
+        worst.report.notes.insert(worst.report.notes.begin(),
+                                  order.size() > 1 ? "the answer's shape fits " + kinds_text(order) + "; judged as " +
+                                                         std::string(check::answer_kind_name(order.front())) +
+                                                         " (--answer KIND says which)"
+                                                   : "answer kind " + std::string(check::answer_kind_name(order.front())) +
+                                                         ", detected from " + answer.detected_from);
+    }
+    return worst;
 }
 
 bool same_failure(const Outcome& a, const Outcome& b) {
@@ -102,6 +214,18 @@ bool same_failure(const Outcome& a, const Outcome& b) {
         case FailureKind::Unparsable: return true;
     }
     return false;
+}
+
+std::string failure_key(const Outcome& o) {
+    switch (o.kind) {
+        case FailureKind::Crash: return "crash/" + std::to_string(o.run.signal);
+        case FailureKind::NonZeroExit: return "exit/" + std::to_string(o.run.exit_status);
+        case FailureKind::WrongAnswer:
+            return "wrong-answer/" + std::string(check::kind_name(o.report.differences.front().kind));
+        case FailureKind::Timeout: return "timeout";
+        case FailureKind::Unparsable: return "unparsable";
+    }
+    return "?";
 }
 
 std::string failure_label(const Outcome& o) {

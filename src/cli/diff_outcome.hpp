@@ -8,7 +8,10 @@
 #include <string>
 #include <string_view>
 
-#include "dcel/check/compare.hpp"
+#include <array>
+
+#include "answer_options.hpp"
+#include "dcel/check/answer.hpp"
 #include "dcel/dcel.hpp"
 #include "process.hpp"
 
@@ -18,8 +21,8 @@ enum class FailureKind : std::uint8_t {
     Crash,        // killed by a signal (or /bin/sh exited with 128 + its number)
     NonZeroExit,  // exited with a status other than 0
     Timeout,      // no answer within --timeout-ms
-    Unparsable,   // stdout is not a faces answer (empty, garbage, too large)
-    WrongAnswer,  // a faces answer that differs from the reference
+    Unparsable,   // stdout is no answer of the expected kind (empty, garbage, too large)
+    WrongAnswer,  // an answer that differs from the reference
 };
 
 [[nodiscard]] std::string_view failure_name(FailureKind k);  // "crash", "non-zero exit", ...
@@ -30,15 +33,33 @@ struct Outcome {
     std::string what;      // one line: the exit status, the parse error, the first difference
     check::Report report;  // the differences, for a wrong answer
     ProcessResult run;     // what the command did (a crash reported by sh as Signalled)
+    check::AnswerKind answer_kind = check::AnswerKind::Faces;  // how the answer was read
+    // For drawing: the answer as vertex cycles (faces, dump) or as polygons of
+    // vertex rings (polygons, rings); empty when it could not be read.
+    std::vector<std::vector<Index>> answer_cycles;
+    std::vector<std::vector<std::vector<Index>>> answer_polygons;
 };
 
-[[nodiscard]] Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits);
+// How a run reads answers: --answer and the conventions, and, when the kind
+// is detected, which kinds ambiguous shapes (a bare list of id lists, an
+// empty list) agreed as so far, so a failure is judged as the likeliest.
+struct AnswerJudging {
+    AnswerOptions options;
+    std::array<std::size_t, 4> agreed_as{};
+};
+
+[[nodiscard]] Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits,
+                            AnswerJudging& judging);
 
 // Same kind, and the same signal, exit status or kind of first difference.
 [[nodiscard]] bool same_failure(const Outcome& a, const Outcome& b);
 
 // "wrong answer (reversed-cycle)", "crash (signal 11)", "non-zero exit (status 1)", "timeout".
 [[nodiscard]] std::string failure_label(const Outcome& o);
+
+// A short stable key of the failure's kind: "wrong-answer/reversed-cycle",
+// "crash/11", "exit/3", "timeout", "unparsable".
+[[nodiscard]] std::string failure_key(const Outcome& o);
 
 // At most max_bytes of text, printable: other bytes as \xNN, newlines as \n.
 [[nodiscard]] std::string printable(std::string_view text, std::size_t max_bytes);

@@ -3,14 +3,16 @@
 #include <sstream>
 
 #include "dcel/build.hpp"
-#include "dcel/io/dcel_json.hpp"
+#include "dcel/check/answer.hpp"
 #include "dcel/io/graph_json.hpp"
+#include "dcel/io/json_writer.hpp"
 
 namespace dcel::cli {
 namespace {
 
 constexpr std::size_t kShownBytes = 2000;  // of an answer or of stderr
 constexpr std::size_t kShownDifferences = 8;
+constexpr std::size_t kShownCases = 10;
 
 std::string seconds(std::chrono::milliseconds ms) {
     std::ostringstream s;
@@ -30,6 +32,8 @@ std::string without_newline(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     return text;
 }
+
+std::string kind_of(const Outcome& o) { return std::string(check::answer_kind_name(o.answer_kind)); }
 
 // What the command did with the graph: its answer, or how it ended and the
 // end of its stderr.
@@ -51,44 +55,28 @@ void describe_answer(std::ostream& s, const Outcome& o) {
     if (printed_answer && o.kind == FailureKind::Unparsable) s << "what is wrong: " << o.what << "\n";
 }
 
-}  // namespace
-
-std::string shell_quote(const std::string& text) {
-    std::string out = "'";
-    for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
+std::string case_text(const Case& c) {
+    return "family " + std::string(gen::family_name(c.spec.params.family)) + ", " + size_of(c.graph) + ", " +
+           std::string(gen::coordinate_class_name(c.coordinates)) + " coordinates";
 }
 
-std::string replay_command(const DiffOptions& options, std::size_t case_number) {
-    std::string cmd = "dcel diff --impl " + shell_quote(options.impl) + " --seed " + std::to_string(options.seed) +
-                      " --case " + std::to_string(case_number);
-    if (options.max_vertices != DiffOptions{}.max_vertices) cmd += " --max-vertices " + std::to_string(options.max_vertices);
-    if (options.stream) cmd += " --stream";
-    cmd += " --timeout-ms " + std::to_string(options.limits.timeout.count());
-    return cmd;
+std::string cases_list(const Failure& f) {
+    std::string s;
+    for (std::size_t i = 0; i < f.cases.size() && i < kShownCases; ++i)
+        s += (i == 0 ? "" : ", ") + std::to_string(f.cases[i]);
+    if (f.occurrences > kShownCases) s += ", ...";
+    return s;
 }
 
-std::string format_report(const DiffOptions& options, const DiffResult& result) {
-    std::ostringstream s;
-    if (!result.failure) {
-        s << "dcel diff: agrees on " << count(result.cases_run, "case");
-        if (result.cases_run > 0) {
-            s << " (" << result.first_case << " to " << result.first_case + result.cases_run - 1 << ", seed " << options.seed
-              << ")";
-        }
-        s << " in " << seconds(result.elapsed);
-        if (result.stopped_by_time) s << "; stopped by --time";
-        s << "\n";
-        return s.str();
-    }
-    const Counterexample& c = *result.failure;
+// The body of one failure: how it shrank, the graph, the reference, the
+// answer, the differences, how to replay it.
+void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f) {
+    const Counterexample& c = f.example;
     const Outcome& o = c.outcome;
-    s << "dcel diff: " << failure_label(c.first) << " on case " << c.spec.number << " (family "
-      << gen::family_name(c.spec.params.family) << ", " << size_of(c.original) << ", seed " << options.seed << "), found in "
-      << seconds(result.found_after) << " after " << count(c.spec.number - result.first_case, "agreeing case") << "\n";
     if (!c.reproduced) {
-        s << "not shrunk: run alone in a fresh process, the case did not fail the same way again, so it depends "
-             "on the cases before it (--stream state) or the command is not deterministic\n";
+        s << "not shrunk: run again in a fresh process" << (options.stream ? ", alone or after the graphs before it," : ",")
+          << " the case did not fail the same way, so the command is not deterministic"
+          << (options.stream ? " or depends on more than the last 8 graphs" : "") << "\n";
     } else if (c.steps == 0) {
         s << "no smaller graph fails the same way (" << count(c.attempts, "attempt") << " in " << seconds(c.shrink_elapsed)
           << (c.budget_spent ? ", stopped by the shrink budget" : "") << ")\n";
@@ -97,10 +85,27 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
           << count(c.steps, "smaller failing graph") << " kept" << (c.budget_spent ? ", stopped by the shrink budget" : "")
           << ") to a graph that fails the same way\n";
     }
+    if (c.shrink_timeout) {
+        s << "(a hang: candidates ran with a " << c.shrink_timeout->count()
+          << " ms timeout, 5 times the slowest passing case; the counterexample hangs for the full --timeout-ms "
+          << options.limits.timeout.count() << ")\n";
+    }
     s << "counterexample: " << size_of(c.graph) << "\n\n";
-
-    s << "graph (dcel faces -, or the command's stdin):\n  " << without_newline(io::write_graph(c.graph)) << "\n";
-    s << "reference (dcel faces):\n  " << without_newline(io::write_faces_of(build(c.graph))) << "\n";
+    if (!c.prefix.empty()) {
+        s << "it fails only after " << count(c.prefix.size(), "other graph")
+          << " in the same --stream process (state kept between graphs); first send:\n";
+        for (const std::string& p : c.prefix) s << "  " << without_newline(p) << "\n";
+        s << "then ";
+    }
+    s << "graph (the command's stdin; dcel faces - reads it too):\n  " << without_newline(c.text) << "\n";
+    if (!(c.original.spec.spelling.numbers == gen::Spelling::Numbers::Shortest && !c.original.spec.spelling.positional &&
+          !c.original.spec.spelling.edges_first && !c.original.spec.spelling.compact)) {
+        s << "  (written with " << c.original.spec.spelling.describe()
+          << "; plainly: " << without_newline(io::write_graph(c.graph)) << ")\n";
+    }
+    const check::AnswerKind kind = o.answer_kind;
+    s << "reference (" << (kind == check::AnswerKind::Faces ? "dcel faces" : kind_of(o) + ", as dcel check compares them")
+      << "):\n  " << without_newline(check::reference_answer(build(c.graph), kind)) << "\n";
     s << "the command says (" << failure_label(o) << "):\n";
     describe_answer(s, o);
     if (o.kind == FailureKind::WrongAnswer) {
@@ -113,16 +118,300 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
             }
             if (diffs.size() > kShownDifferences) s << "  ...\n";
         }
+        for (const std::string& note : o.report.notes) s << "note: " << note << "\n";
+    }
+    s << "\nreplay the case (it is shrunk again):\n  " << replay_command(options, c.original.spec.number) << "\n";
+    s << "the original graph (its exact bytes): dcel diff --print-case " << c.original.spec.number
+      << schedule_arguments(options) << "\n";
+    s << "run the command on the counterexample:\n  printf '%s\\n' " << shell_quote(without_newline(c.text)) << " | "
+      << options.impl << "\n";
+}
+
+std::string stop_text(const DiffResult& r) {
+    switch (r.stopped_by) {
+        case StopReason::Time: return "; stopped by --time";
+        case StopReason::MaxFailures: return "; stopped at --max-failures";
+        case StopReason::Cases:
+        case StopReason::FirstFailure: break;
+    }
+    return "";
+}
+
+std::string range_text(const DiffOptions& options, const DiffResult& result) {
+    if (result.cases_run == 0) return "";
+    return " (" + std::to_string(result.first_case) + " to " + std::to_string(result.first_case + result.cases_run - 1) +
+           ", seed " + std::to_string(options.schedule.seed) + ")";
+}
+
+}  // namespace
+
+std::string shell_quote(const std::string& text) {
+    std::string out = "'";
+    for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string schedule_arguments(const DiffOptions& options) {
+    const Schedule defaults;
+    const Schedule& s = options.schedule;
+    std::string a = " --seed " + std::to_string(s.seed);
+    if (s.max_vertices != defaults.max_vertices) a += " --max-vertices " + std::to_string(s.max_vertices);
+    if (s.large_vertices != defaults.large_vertices) a += " --large-vertices " + std::to_string(s.large_vertices);
+    if (!s.families.empty()) {
+        a += " --families ";
+        for (std::size_t i = 0; i < s.families.size(); ++i)
+            a += (i == 0 ? "" : ",") + std::string(gen::family_name(s.families[i]));
+    }
+    if (!s.classes.empty()) {
+        a += " --coordinates ";
+        for (std::size_t i = 0; i < s.classes.size(); ++i) {
+            a += (i == 0 ? "" : ",") + std::string(gen::coordinate_class_name(s.classes[i]));
+        }
+    }
+    return a;
+}
+
+namespace {
+
+// --stream and how answers are read: what a replay needs besides the schedule.
+std::string run_arguments(const DiffOptions& options) {
+    std::string a;
+    if (options.stream) a += " --stream";
+    if (options.answer.kind) a += " --answer " + std::string(check::answer_kind_name(*options.answer.kind));
+    if (options.answer.conventions.face_on_right) a += " --face-on right";
+    if (options.answer.conventions.one_based) a += " --one-based";
+    if (options.answer.conventions.unoriented) a += " --unoriented";
+    return a;
+}
+
+}  // namespace
+
+std::string replay_command(const DiffOptions& options, std::size_t case_number) {
+    return "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) + " --case " +
+           std::to_string(case_number) + run_arguments(options) + " --timeout-ms " +
+           std::to_string(options.limits.timeout.count());
+}
+
+std::string format_report(const DiffOptions& options, const DiffResult& result) {
+    std::ostringstream s;
+    if (result.failures.empty()) {
+        s << "dcel diff: agrees on " << count(result.cases_run - result.skipped, "case") << range_text(options, result)
+          << " in " << seconds(result.elapsed) << stop_text(result) << "\n";
+        if (result.skipped != 0) {
+            s << "(" << count(result.skipped, "case") << " skipped: no graph in the allowed coordinate classes)\n";
+        }
+        return s.str();
+    }
+    const bool several = options.keep_going;
+    if (several) {
+        s << "dcel diff: " << count(result.failures.size(), "distinct failure") << " in " << count(result.cases_run, "case")
+          << range_text(options, result) << " in " << seconds(result.elapsed) << stop_text(result) << "\n";
+    }
+    for (const Failure& f : result.failures) {
+        const Counterexample& c = f.example;
+        if (several) {
+            s << "\nfailure " << f.id << " of " << result.failures.size() << ": " << failure_label(c.first) << " on case "
+              << c.original.spec.number << " (" << case_text(c.original) << "), found after " << seconds(f.found_after)
+              << "; " << count(f.occurrences, "case") << " failed this way (" << cases_list(f) << ")\n";
+        } else {
+            s << "dcel diff: " << failure_label(c.first) << " on case " << c.original.spec.number << " ("
+              << case_text(c.original) << ", seed " << options.schedule.seed << "), found in " << seconds(f.found_after)
+              << " after " << count(c.original.spec.number - result.first_case, "agreeing case") << "\n";
+        }
+        failure_body(s, options, f);
     }
     if (options.stream && result.restarts > 0) {
-        s << "--stream: \"CMD --stream\" was started " << result.restarts + 1
-          << " times: for the run, then afresh to replay the failing case alone and after each crash or timeout\n";
+        s << "\n--stream: \"CMD --stream\" was started " << result.restarts + 1
+          << " times: for the run, then afresh to replay failing cases and after each crash or timeout\n";
     }
-    s << "\nreplay the case (it is shrunk again):\n  " << replay_command(options, c.spec.number) << "\n";
-    s << "the original graph: dcel gen --family " << gen::family_name(c.spec.params.family) << " --seed "
-      << c.spec.params.seed << " --vertices " << c.spec.params.vertices << "\n";
-    s << "run the command on the counterexample:\n  printf '%s\\n' "
-      << shell_quote(without_newline(io::write_graph(c.graph))) << " | " << options.impl << "\n";
+    if (several) {
+        s << "\nsummary: " << count(result.failures.size(), "distinct failure") << " in " << count(result.cases_run, "case")
+          << "\n";
+        for (const Failure& f : result.failures) {
+            s << "  " << f.id << ". " << failure_label(f.example.first) << ": " << count(f.occurrences, "case")
+              << ", shrunk to " << size_of(f.example.graph) << " ("
+              << gen::coordinate_class_name(gen::classify(f.example.graph)) << " coordinates)\n";
+        }
+    }
+    return s.str();
+}
+
+std::string report_json(const DiffOptions& options, const DiffResult& result) {
+    std::string out;
+    io::JsonWriter w(out);
+    auto key = [&](const char* k, bool first = false) {
+        w.raw(first ? "\n  \"" : ",\n  \"");
+        w.raw(std::string_view(k));
+        w.raw("\": ");
+    };
+    w.raw("{");
+    key("format", true);
+    w.string("dcel diff report 1");
+    key("command");
+    std::string command = "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) +
+                          run_arguments(options) + " --timeout-ms " + std::to_string(options.limits.timeout.count());
+    if (options.cases) command += " --cases " + std::to_string(*options.cases);
+    if (options.time) command += " --time " + seconds(*options.time).substr(0, seconds(*options.time).size() - 2);
+    if (options.keep_going) command += " --keep-going";
+    w.string(command);
+    key("impl");
+    w.string(options.impl);
+    key("seed");
+    w.count(options.schedule.seed);
+    key("answer_kind");
+    if (options.answer.kind) {
+        w.string(check::answer_kind_name(*options.answer.kind));
+    } else {
+        w.raw("null");
+    }
+    key("cases_run");
+    w.count(result.cases_run);
+    key("first_case");
+    w.count(result.first_case);
+    key("skipped");
+    w.count(result.skipped);
+    key("large_cases");
+    w.count(result.large_cases);
+    key("stopped_by");
+    static constexpr const char* kStops[] = {"cases", "time", "first-failure", "max-failures"};
+    w.string(kStops[static_cast<std::size_t>(result.stopped_by)]);
+    key("elapsed_ms");
+    w.count(static_cast<std::uint64_t>(result.elapsed.count()));
+    key("reference_cpu_ms");
+    w.count(static_cast<std::uint64_t>(result.reference_cpu.count()));
+    key("agrees");
+    w.raw(result.failures.empty() ? "true" : "false");
+    key("failures");
+    w.raw("[");
+    for (std::size_t i = 0; i < result.failures.size(); ++i) {
+        const Failure& f = result.failures[i];
+        const Counterexample& c = f.example;
+        w.raw(i == 0 ? "\n    {" : ",\n    {");
+        w.raw("\"id\": ");
+        w.count(f.id);
+        w.raw(", \"label\": ");
+        w.string(failure_label(c.first));
+        w.raw(", \"kind\": ");
+        w.string(failure_name(c.first.kind));
+        w.raw(", \"signature\": ");
+        w.string(f.signature);
+        w.raw(", \"occurrences\": ");
+        w.count(f.occurrences);
+        w.raw(", \"cases\": [");
+        for (std::size_t k = 0; k < f.cases.size(); ++k) {
+            if (k != 0) w.raw(", ");
+            w.count(f.cases[k]);
+        }
+        w.raw("], \"found_after_ms\": ");
+        w.count(static_cast<std::uint64_t>(f.found_after.count()));
+        w.raw(",\n     \"case\": {\"number\": ");
+        w.count(c.original.spec.number);
+        w.raw(", \"family\": ");
+        w.string(gen::family_name(c.original.spec.params.family));
+        w.raw(", \"coordinates\": ");
+        w.string(gen::coordinate_class_name(c.original.coordinates));
+        w.raw(", \"spelling\": ");
+        w.string(c.original.spec.spelling.describe());
+        w.raw(", \"vertices\": ");
+        w.count(c.original.graph.vertices.size());
+        w.raw(", \"edges\": ");
+        w.count(c.original.graph.edges.size());
+        w.raw("},\n     \"reproduced\": ");
+        w.raw(c.reproduced ? "true" : "false");
+        w.raw(", \"prefix\": [");
+        for (std::size_t k = 0; k < c.prefix.size(); ++k) {
+            if (k != 0) w.raw(", ");
+            w.string(c.prefix[k]);
+        }
+        w.raw("],\n     \"counterexample\": {\"vertices\": ");
+        w.count(c.graph.vertices.size());
+        w.raw(", \"edges\": ");
+        w.count(c.graph.edges.size());
+        w.raw(", \"text\": ");
+        w.string(c.text);
+        w.raw(", \"graph\": ");
+        w.raw(without_newline(io::write_graph(c.graph)));
+        w.raw("},\n     \"shrinking\": {\"attempts\": ");
+        w.count(c.attempts);
+        w.raw(", \"steps\": ");
+        w.count(c.steps);
+        w.raw(", \"elapsed_ms\": ");
+        w.count(static_cast<std::uint64_t>(c.shrink_elapsed.count()));
+        w.raw(", \"budget_spent\": ");
+        w.raw(c.budget_spent ? "true" : "false");
+        w.raw("},\n     \"outcome\": {\"label\": ");
+        w.string(failure_label(c.outcome));
+        w.raw(", \"what\": ");
+        w.string(c.outcome.what);
+        w.raw(", \"answer_kind\": ");
+        w.string(check::answer_kind_name(c.outcome.answer_kind));
+        w.raw(", \"stdout\": ");
+        w.string(c.outcome.run.out.substr(0, kShownBytes));
+        w.raw(", \"stderr_tail\": ");
+        w.string(c.outcome.run.err_tail);
+        w.raw(", \"differences\": [");
+        for (std::size_t k = 0; k < c.outcome.report.differences.size(); ++k) {
+            const check::Difference& d = c.outcome.report.differences[k];
+            w.raw(k == 0 ? "\n       {\"kind\": " : ",\n       {\"kind\": ");
+            w.string(check::kind_name(d.kind));
+            w.raw(", \"message\": ");
+            w.string(d.message);
+            w.raw("}");
+        }
+        w.raw("], \"notes\": [");
+        for (std::size_t k = 0; k < c.outcome.report.notes.size(); ++k) {
+            if (k != 0) w.raw(", ");
+            w.string(c.outcome.report.notes[k]);
+        }
+        w.raw("]},\n     \"reference\": ");
+        w.string(without_newline(check::reference_answer(build(c.graph), c.outcome.answer_kind)));
+        w.raw(",\n     \"replay\": ");
+        w.string(replay_command(options, c.original.spec.number));
+        w.raw("}");
+    }
+    w.raw(result.failures.empty() ? "]" : "\n  ]");
+    w.raw("\n}\n");
+    w.flush();
+    return out;
+}
+
+std::string report_junit(const DiffOptions& options, const DiffResult& result) {
+    auto xml = [](const std::string& text) {
+        std::string out;
+        for (const char ch : text) {
+            switch (ch) {
+                case '&': out += "&amp;"; break;
+                case '<': out += "&lt;"; break;
+                case '>': out += "&gt;"; break;
+                case '"': out += "&quot;"; break;
+                default:
+                    // XML 1.0 allows no control characters but tab, newline and return.
+                    out += static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n' && ch != '\r' ? '?' : ch;
+                    break;
+            }
+        }
+        return out;
+    };
+    std::ostringstream s;
+    const std::size_t tests = result.failures.size() + 1;
+    s << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    s << "<testsuites name=\"dcel diff\" tests=\"" << tests << "\" failures=\"" << result.failures.size() << "\">\n";
+    s << "  <testsuite name=\"" << xml("dcel diff --impl " + options.impl) << "\" tests=\"" << tests << "\" failures=\""
+      << result.failures.size() << "\" time=\"" << static_cast<double>(result.elapsed.count()) / 1000.0 << "\">\n";
+    s << "    <testcase classname=\"dcel.diff\" name=\"" << (result.cases_run - result.skipped) << " cases, seed "
+      << options.schedule.seed << "\"/>\n";
+    for (const Failure& f : result.failures) {
+        std::ostringstream body;
+        failure_body(body, options, f);
+        s << "    <testcase classname=\"dcel.diff\" name=\"" << xml("failure " + std::to_string(f.id) + ": " + f.signature)
+          << "\">\n";
+        s << "      <failure message=\""
+          << xml(failure_label(f.example.first) + " on case " + std::to_string(f.example.original.spec.number) +
+                 ", shrunk to " + size_of(f.example.graph))
+          << "\" type=\"" << xml(failure_name(f.example.first.kind).data()) << "\">" << xml(body.str()) << "</failure>\n";
+        s << "    </testcase>\n";
+    }
+    s << "  </testsuite>\n</testsuites>\n";
     return s.str();
 }
 

@@ -1,14 +1,17 @@
-// The work of `dcel diff`: run the foreign command on the scheduled cases,
-// and on the first failure confirm it, shrink it and keep what the report
-// needs. No printing here except through the progress callback.
+// The work of `dcel diff`: run the foreign command on the scheduled cases; on
+// a failure confirm it, shrink it and keep what the report needs; with
+// --keep-going, go on, grouping failures into distinct bugs and shrinking each
+// once. No printing here except through the progress callback.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "dcel/graph.hpp"
 #include "diff_cases.hpp"
@@ -21,39 +24,70 @@ struct DiffOptions {
     std::string impl;      // the command, run by /bin/sh -c
     bool stream = false;   // run "IMPL --stream" once, a line per case
     ProcessLimits limits;  // per case
-    std::uint64_t seed = 1;
-    std::optional<std::size_t> cases;      // none: until --time runs out
-    std::optional<std::size_t> only_case;  // --case: replay this one
-    std::size_t max_vertices = 60;
-    std::optional<std::chrono::milliseconds> time;  // bounds the search for a failure
-    std::chrono::milliseconds shrink_time{20000};   // bounds the shrinking
+    Schedule schedule;
+    std::optional<std::size_t> cases;               // none: until --time runs out
+    std::optional<std::size_t> only_case;           // --case: replay this one
+    std::optional<std::chrono::milliseconds> time;  // bounds the search for failures
+    std::chrono::milliseconds shrink_time{20000};   // bounds the shrinking of each failure
     std::size_t shrink_attempts = 5000;
+    AnswerOptions answer;
+    bool keep_going = false;        // go on after a failure (the default under --time)
+    std::size_t max_failures = 20;  // distinct failures; the search stops there
 };
 
 struct Counterexample {
-    CaseSpec spec;
-    PlanarGraph original;
-    Outcome first;              // on the original graph
-    bool reproduced = false;    // failed the same way again, alone, in a fresh process
+    Case original;            // the case as generated: spec, graph, class, exact text
+    Outcome first;            // on the original graph
+    bool reproduced = false;  // failed the same way again in a fresh process (after `prefix`)
+    // --stream state: the graphs (exact text) that had to go first in the same
+    // process for the failure to show; empty when it fails alone.
+    std::vector<std::string> prefix;
     PlanarGraph graph;          // the shrunk graph (the original when not reproduced)
+    std::string text;           // its exact bytes, in the case's spelling
     Outcome outcome;            // on graph
     std::size_t attempts = 0;   // shrink candidates run
     std::size_t steps = 0;      // of which kept (each a smaller failing graph)
     bool budget_spent = false;  // shrinking stopped by --shrink-time or the attempt cap
     std::chrono::milliseconds shrink_elapsed{};
+    // A hang: candidates ran with this shorter timeout (derived from the
+    // passing cases' times), and the result was confirmed with --timeout-ms.
+    std::optional<std::chrono::milliseconds> shrink_timeout;
 };
+
+// One distinct bug: its first case shrunk, and every case that failed so.
+struct Failure {
+    std::size_t id = 0;             // 1, 2, ... in the order found
+    std::string key;                // failure_key of the first case, and its coordinate class
+    std::vector<std::string> keys;  // every such key counted as this failure
+    // After shrinking: the failure key, and the counterexample's coordinate
+    // class and size. A new failure with an existing signature is merged.
+    std::string signature;
+    std::vector<std::size_t> cases;  // the cases that failed this way (the first kMaxListedCases)
+    std::size_t occurrences = 0;
+    std::chrono::milliseconds found_after{};  // from the start of the run
+    Counterexample example;
+};
+
+inline constexpr std::size_t kMaxListedCases = 100;
+
+enum class StopReason : std::uint8_t { Cases, Time, FirstFailure, MaxFailures };
 
 struct DiffResult {
-    std::size_t cases_run = 0;  // cases that agreed, plus the failing one
+    std::size_t cases_run = 0;  // cases run, agreeing or not
     std::size_t first_case = 0;
-    bool stopped_by_time = false;
+    std::size_t skipped = 0;  // cases no graph of an allowed coordinate class was found for
+    StopReason stopped_by = StopReason::Cases;
     std::chrono::milliseconds elapsed{};
-    std::chrono::milliseconds found_after{};  // from the start to the first failure
-    std::size_t restarts = 0;                 // --stream: starts of the command after the first
-    std::optional<Counterexample> failure;
+    std::size_t restarts = 0;  // --stream: starts of the command after the first
+    std::vector<Failure> failures;
+    std::array<std::size_t, 4> agreed_as{};  // answers that agreed, by the kind they were read as
+    std::size_t large_cases = 0;             // large cases run
+    // CPU time of dcel itself (generating, writing, building the reference,
+    // judging), without the command's: what the reference side costs.
+    std::chrono::milliseconds reference_cpu{};
 };
 
-// Called with a short status line while working (for a terminal).
+// Called with a short status line while working.
 using Progress = std::function<void(const std::string&)>;
 
 // Throws UsageError when /bin/sh cannot run the command at all (exit status

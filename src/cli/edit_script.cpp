@@ -1,7 +1,9 @@
 #include "edit_script.hpp"
 
 #include <array>
+#include <unordered_set>
 
+#include "dcel/format.hpp"
 #include "dcel/io/json_reader.hpp"
 
 namespace dcel::cli {
@@ -28,12 +30,15 @@ Point read_point(JsonReader& r) {
     return p;
 }
 
-// {"name": [x, y], ...} at a value position.
+// {"name": [x, y], ...} at a value position; a name given twice is refused
+// like any duplicate key.
 std::vector<NamedPoint> read_names(JsonReader& r) {
     std::vector<NamedPoint> out;
+    std::unordered_set<std::string> seen;
     r.begin_object(R"(face names {"name": [x, y], ...})");
     while (r.next_member()) {
         std::string name(r.key());
+        if (!seen.insert(name).second) r.fail_duplicate_key();
         out.push_back({std::move(name), read_point(r)});
     }
     return out;
@@ -78,8 +83,8 @@ ScriptStep read_step(JsonReader& r) {
     std::size_t op = 0;
     while (op < std::size(kOps) && kOps[op] != key) ++op;
     if (op == std::size(kOps)) {
-        r.fail(InputErrorKind::Shape, "unknown operation \"" + std::string(key) +
-                                          "\": expected one of name, split_edge, add_edge, add_edge_to_point, "
+        r.fail(InputErrorKind::Shape, "unknown operation " + quote_for_message(key) +
+                                          ": expected one of name, split_edge, add_edge, add_edge_to_point, "
                                           "add_vertex, remove_edge, remove_vertex, merge_edges, locate, stab");
     }
     step.op = static_cast<ScriptStep::Op>(op);

@@ -1,16 +1,20 @@
 #include "process.hpp"
 
+#include <dirent.h>
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <string_view>
 #include <thread>
 
 #include "cli_support.hpp"
@@ -51,19 +55,135 @@ void forget_group(pid_t pid) {
     }
 }
 
+bool is_live_group(pid_t pid) {
+    for (const volatile std::sig_atomic_t& slot : live_groups) {
+        if (slot == pid) return true;
+    }
+    return false;
+}
+
+// ---- Processes that escaped their process group.
+//
+// A command may start a process in a session of its own (setsid, a daemon's
+// double fork): killing the command's process group does not reach it. dcel
+// is a child subreaper (PR_SET_CHILD_SUBREAPER), so such a process, once its
+// parent dies, becomes dcel's child instead of init's; then it can be found
+// in /proc/self/task/*/children, killed and reaped. Everything here uses
+// only async-signal-safe calls (open, read, close, kill, waitpid), since
+// the signal handler runs it too.
+
+constexpr std::size_t kMaxStrays = 512;  // per round; more are taken next round
+
+// Appends the pids listed in a /proc/.../children file to `out`.
+void read_children(const char* path, pid_t* out, std::size_t& n) {
+    const int fd = ::open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return;
+    char buffer[4096];
+    pid_t value = 0;
+    bool in_number = false;
+    for (;;) {
+        const ssize_t k = ::read(fd, buffer, sizeof buffer);
+        if (k < 0 && errno == EINTR) continue;
+        if (k <= 0) break;
+        for (ssize_t i = 0; i < k; ++i) {
+            const char c = buffer[i];
+            if (c >= '0' && c <= '9') {
+                value = value * 10 + (c - '0');
+                in_number = true;
+            } else if (in_number) {
+                if (n < kMaxStrays) out[n++] = value;
+                value = 0;
+                in_number = false;
+            }
+        }
+    }
+    if (in_number && n < kMaxStrays) out[n++] = value;
+    ::close(fd);
+}
+
+// "/proc/self/task/<tid>/children" into path (at least 64 bytes).
+void children_path(char* path, long tid) {
+    const char head[] = "/proc/self/task/";
+    const char tail[] = "/children";
+    std::size_t n = 0;
+    for (const char c : std::string_view(head)) path[n++] = c;
+    char digits[24];
+    std::size_t k = 0;
+    do {
+        digits[k++] = static_cast<char>('0' + tid % 10);
+        tid /= 10;
+    } while (tid > 0);
+    while (k > 0) path[n++] = digits[--k];
+    for (const char c : std::string_view(tail)) path[n++] = c;
+    path[n] = '\0';
+}
+
+// Our children other than the commands still running. Orphans are handed to
+// a live thread of the subreaper, normally the main thread; the other
+// threads' lists are read too when `all_threads` (not in a signal handler,
+// where opendir is not allowed).
+std::size_t stray_children(pid_t* out, bool all_threads) {
+    std::size_t n = 0;
+    char path[64];
+    children_path(path, ::getpid());
+    read_children(path, out, n);
+    if (all_threads) {
+        if (DIR* dir = ::opendir("/proc/self/task")) {
+            while (const dirent* entry = ::readdir(dir)) {
+                const long tid = std::strtol(entry->d_name, nullptr, 10);
+                if (tid > 0 && tid != ::getpid()) {
+                    children_path(path, tid);
+                    read_children(path, out, n);
+                }
+            }
+            ::closedir(dir);
+        }
+    }
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!is_live_group(out[i])) out[kept++] = out[i];
+    }
+    return kept;
+}
+
+// Kills and reaps every stray child, round after round: reaping one hands
+// its own children to us, and they are taken in the next round. Bounded,
+// so that a process forking as fast as we kill cannot keep us here.
+void reap_strays(bool all_threads) {
+    pid_t strays[kMaxStrays];
+    for (int round = 0; round < 256; ++round) {
+        const std::size_t n = stray_children(strays, all_threads);
+        if (n == 0) return;
+        for (std::size_t i = 0; i < n; ++i) {
+            ::kill(-strays[i], SIGKILL);  // its group, when it leads one (setsid)
+            ::kill(strays[i], SIGKILL);
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            while (::waitpid(strays[i], nullptr, 0) < 0 && errno == EINTR) {
+            }
+        }
+    }
+}
+
 extern "C" void kill_groups_and_die(int sig) {
+    const int saved = errno;
     for (volatile std::sig_atomic_t& slot : live_groups) {
         if (slot != 0) ::kill(-static_cast<pid_t>(slot), SIGKILL);
+        slot = 0;  // now strays like any other: reaped below, so that their escaped children come to us
     }
+    reap_strays(false);
+    errno = saved;
     std::signal(sig, SIG_DFL);
     std::raise(sig);
 }
 
-// Once: SIGPIPE ignored (writing to a child that stopped reading must fail
-// with EPIPE, not kill us); SIGINT, SIGTERM and SIGHUP take the children down
-// with us, unless they were ignored (nohup).
+// Once: dcel becomes a child subreaper (above); SIGPIPE ignored (writing to
+// a child that stopped reading must fail with EPIPE, not kill us); SIGINT,
+// SIGTERM and SIGHUP take the children down with us, unless they were
+// ignored (nohup).
 void install_signal_handling() {
     static const bool once = [] {
+        ::prctl(PR_SET_CHILD_SUBREAPER, 1UL, 0UL, 0UL, 0UL);
         std::signal(SIGPIPE, SIG_IGN);
         for (const int sig : {SIGINT, SIGTERM, SIGHUP}) {
             if (std::signal(sig, kill_groups_and_die) == SIG_IGN) std::signal(sig, SIG_IGN);
@@ -167,6 +287,7 @@ void finish(Child& c, ProcessResult& r, bool decided) {
     while (::waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
     }
     forget_group(c.pid);
+    reap_strays(true);  // what escaped the group and came back to us
     if (!decided) {
         if (WIFSIGNALED(status)) {
             r.end = ProcessEnd::Signalled;

@@ -2,9 +2,11 @@
 //
 // The command runs as `/bin/sh -c COMMAND` in a process group of its own, so
 // a timeout kills everything it started (a shell, an interpreter, their
-// children). Its stdin is written while its stdout and stderr are read, all
-// through poll(), so a child that never reads its input, or fills a pipe
-// before reading, cannot deadlock us. What it prints is capped, so garbage
+// children). What escapes the group (setsid, a daemon's double fork) comes
+// back to dcel, a child subreaper, when its parent dies, and is killed and
+// reaped once the run ends (or dcel is interrupted). Its stdin is written
+// while its stdout and stderr are read, all through poll(), so a child that
+// never reads its input, or fills a pipe before reading, cannot deadlock us. What it prints is capped, so garbage
 // cannot exhaust our memory.
 #pragma once
 

@@ -2,15 +2,16 @@
 // in order along it (the "faces cut by a line" query of de Berg et al., ch. 2).
 //
 // The walk starts where the segment starts (or, for a line, at an edge the
-// line meets) and goes from face to face: in each face it scans the face's
-// cycles (outer and holes) and isolated vertices for the first thing the
-// segment meets ahead, steps across it, and continues. Every decision is
-// exact: crossing points are never computed, only ordered (line_order.hpp).
+// line meets) and goes from face to face: from each face to the next thing
+// the line meets (a vertex on it, an edge it crosses), steps across it, and
+// continues. Every decision is exact: crossing points are never computed,
+// only ordered (line_order.hpp).
 //
-// Costs: O(sum over the faces entered of their boundary size), a face being
-// counted again each time the walk re-enters it (a line that crosses many
-// islands re-enters the unbounded face each time). stab_segment adds
-// O(V + E) to locate the start; stab_line from a given half-edge adds nothing.
+// Costs: O(V + E + k log k) for k pieces: one pass over the vertices and
+// edges finds everything on the line, which is then sorted along it (the
+// walk moves from one to the next by binary search, so re-entering a large
+// face costs nothing extra), plus the degrees of the vertices passed
+// through. stab_segment adds O(V + E) to locate the start.
 #pragma once
 
 #include <vector>

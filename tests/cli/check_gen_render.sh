@@ -72,9 +72,9 @@ gen)
     run "$D gen --family bogus"
     expect unknown-family 2 'unknown family "bogus"; the families are random-segments, triangulation, .*near-degenerate'
     run "$D gen --vertices 20000"
-    expect too-many-vertices 2 'more than 10000'
+    expect too-many-vertices 2 '^dcel: gen: --vertices: expected an integer from 0 to 10000, found "20000"'
     run "$D gen --seed -1"
-    expect negative-seed 2 '--seed: expected an unsigned 64-bit integer, found "-1"'
+    expect negative-seed 2 '^dcel: gen: --seed: expected a non-negative integer \(at most 18446744073709551615\), found "-1"'
     run "$D gen --help"
     expect help 0 'Families: random-segments'
     ;;

@@ -43,7 +43,7 @@ edit)
     run "$D edit $map $tmp/busy.json"
     expect remove-vertex-with-edges 1 '^dcel: .*steps\[0\]: remove_isolated_vertex: .*v4'
     run "$D edit $map $data/edit/every_operation_script.json --graph-out $tmp/no/such/dir/g.json"
-    expect unwritable-graph-out 2 'cannot write'
+    expect unwritable-graph-out 2 '^dcel: cannot open .*/no/such/dir/g.json for writing: No such file or directory$'
     ;;
 locate)
     run "$D locate $map --points $data/locate/points.json"
@@ -67,13 +67,15 @@ usage)
     run "$D --help"
     expect help 0 'Usage: dcel \[OPTIONS\] SUBCOMMAND'
     run "$D --version"
-    expect version 0 '^[0-9]+\.[0-9]+\.[0-9]+$'
+    expect version 0 '^dcel [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{12}|unknown)\)$'
     run "$D"
-    expect no-command 2 'A subcommand is required'
+    expect no-command 2 '^dcel: no command given; the commands are faces, build, locate, stab, edit, check, gen, render, diff \(dcel --help\)$'
+    run "$D --bogus"
+    expect unknown-global-option 2 '^dcel: unknown option "--bogus"; options go after the command \(dcel --help\)$'
     run "$D facs $map"
     expect misspelt-command 2 '^dcel: unknown command "facs"; the commands are faces, build, locate, stab, edit, check, gen, render, diff \(dcel --help\)$'
     run "$D faces --frobnicate $map"
-    expect unknown-option 2 'frobnicate'
+    expect unknown-option 2 '^dcel: faces: unexpected argument "--frobnicate" \(dcel faces --help\)$'
     run "$D faces $tmp/nonexistent.json"
     expect missing-file 2 'cannot open .*nonexistent.json: No such file or directory'
     run "$D faces - < $src/tests/consumer/square.json"

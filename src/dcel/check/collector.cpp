@@ -16,6 +16,10 @@ std::string_view kind_name(DifferenceKind k) {
         case DifferenceKind::WrongIsolatedVertex: return "wrong-isolated-vertex";
         case DifferenceKind::WrongPoint: return "wrong-point";
         case DifferenceKind::UnreadableAnswer: return "unreadable-answer";
+        case DifferenceKind::NotAVertex: return "not-a-vertex";
+        case DifferenceKind::WrongOrientation: return "wrong-orientation";
+        case DifferenceKind::MissingFace: return "missing-face";
+        case DifferenceKind::ExtraPolygon: return "extra-polygon";
     }
     return "unknown";
 }
@@ -28,10 +32,12 @@ namespace {
 // it; a broken dump explains its cycles; a wrong next names the exact place
 // where a walk goes astray.
 constexpr std::array<DifferenceKind, kKindCount> kOrder{
-    DifferenceKind::UnreadableAnswer,   DifferenceKind::VertexCount,  DifferenceKind::WrongPoint,
-    DifferenceKind::BrokenInvariant,    DifferenceKind::NotAnEdge,    DifferenceKind::WrongNext,
-    DifferenceKind::ReversedCycle,      DifferenceKind::MissingCycle, DifferenceKind::ExtraCycle,
-    DifferenceKind::WrongOuterBoundary, DifferenceKind::WrongHole,    DifferenceKind::WrongIsolatedVertex,
+    DifferenceKind::UnreadableAnswer,    DifferenceKind::VertexCount,        DifferenceKind::NotAVertex,
+    DifferenceKind::WrongPoint,          DifferenceKind::BrokenInvariant,    DifferenceKind::NotAnEdge,
+    DifferenceKind::WrongNext,           DifferenceKind::ReversedCycle,      DifferenceKind::WrongOrientation,
+    DifferenceKind::MissingCycle,        DifferenceKind::ExtraCycle,         DifferenceKind::MissingFace,
+    DifferenceKind::ExtraPolygon,        DifferenceKind::WrongOuterBoundary, DifferenceKind::WrongHole,
+    DifferenceKind::WrongIsolatedVertex,
 };
 }  // namespace
 

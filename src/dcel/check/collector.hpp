@@ -11,7 +11,7 @@
 
 namespace dcel::check::detail {
 
-inline constexpr std::size_t kKindCount = 12;
+inline constexpr std::size_t kKindCount = 16;
 
 class Collector {
 public:

@@ -1,6 +1,7 @@
 // Comparing another implementation's answer with the reference DCEL.
 //
-// Two forms of answer:
+// Two forms of answer here (answer.hpp adds the region kinds, polygons and
+// rings, reading any kind from JSON, and the conventions real code uses):
 //  - faces: every boundary cycle as its vertex ids in next order, as
 //    `dcel faces` prints. Cycle order and rotation do not matter,
 //    orientation does; the multiset of cycles must equal the reference's.
@@ -16,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,12 +42,17 @@ enum class DifferenceKind : std::uint8_t {
     WrongPoint,           // a dump's coordinates differ from the graph's (dumps)
     UnreadableAnswer,     // the answer could not be read or parsed (never from compare_*: for callers
                           // such as `dcel check` and `dcel diff`, which report it like any difference)
+    NotAVertex,           // a ring point given by coordinates that are no vertex of the graph (region kinds)
+    WrongOrientation,     // a ring walked against the orientation its kind fixes (polygons)
+    MissingFace,          // a bounded face of the reference that no polygon or ring describes (region kinds)
+    ExtraPolygon,         // a polygon or ring that describes no bounded face, or one already described
 };
 
 // "vertex-count", "not-an-edge", "broken-invariant", "missing-cycle",
 // "extra-cycle", "reversed-cycle", "wrong-next", "wrong-hole",
 // "wrong-outer-boundary", "wrong-isolated-vertex", "wrong-point",
-// "unreadable-answer".
+// "unreadable-answer", "not-a-vertex", "wrong-orientation", "missing-face",
+// "extra-polygon".
 [[nodiscard]] std::string_view kind_name(DifferenceKind k);
 
 struct Difference {
@@ -60,15 +67,36 @@ inline constexpr std::size_t kMaxListedPerKind = 100;
 
 struct Report {
     // Deterministic order, the most telling first: by kind in the order
-    // unreadable-answer, vertex-count, wrong-point, broken-invariant, not-an-edge, wrong-next,
-    // reversed-cycle, missing-cycle, extra-cycle, wrong-outer-boundary,
-    // wrong-hole, wrong-isolated-vertex; within a kind, in answer order.
+    // unreadable-answer, vertex-count, not-a-vertex, wrong-point,
+    // broken-invariant, not-an-edge, wrong-next, reversed-cycle,
+    // wrong-orientation, missing-cycle, extra-cycle, missing-face,
+    // extra-polygon, wrong-outer-boundary, wrong-hole, wrong-isolated-vertex;
+    // within a kind, in answer order.
     std::vector<Difference> differences;
     std::size_t unlisted = 0;  // differences found beyond kMaxListedPerKind
+    // Not differences: what the comparison assumed or noticed, one line each
+    // ("the answer kind was detected as ...", "every cycle is reversed: the
+    // answer may keep faces on the right (--face-on right)").
+    std::vector<std::string> notes;
     [[nodiscard]] bool agrees() const { return differences.empty(); }
 };
 
 using FacesAnswer = std::vector<std::vector<Index>>;
+
+// Cycles of vertex ids stored flat (one allocation however many cycles):
+// cycle i is ids[begin[i] .. begin[i+1]). What the readers produce, so that an
+// answer of millions of tiny cycles costs a few bytes per id.
+struct CycleList {
+    std::vector<Index> ids;
+    std::vector<std::size_t> begin{0};
+
+    [[nodiscard]] std::size_t size() const { return begin.size() - 1; }
+    [[nodiscard]] std::span<const Index> operator[](std::size_t i) const {
+        return std::span<const Index>(ids).subspan(begin[i], begin[i + 1] - begin[i]);
+    }
+    void end_cycle() { begin.push_back(ids.size()); }  // the ids pushed since the last end_cycle form a cycle
+    [[nodiscard]] static CycleList from(const FacesAnswer& faces);
+};
 
 [[nodiscard]] Report compare_faces(const Dcel& reference, const FacesAnswer& answer);
 [[nodiscard]] Report compare_dump(const Dcel& reference, const DcelDump& answer);

@@ -12,11 +12,12 @@ constexpr std::size_t kShownVertices = 12;
 std::uint64_t key(Index u, Index v) { return (std::uint64_t{u} << 32U) | v; }
 
 std::string vertex(Index v) { return "v" + std::to_string(v); }
+std::vector<Index> as_vector(std::span<const Index> s) { return {s.begin(), s.end()}; }
 std::string step(Index u, Index v) { return vertex(u) + "->" + vertex(v); }
 
 }  // namespace
 
-std::string cycle_text(const std::vector<Index>& vertices) {
+std::string cycle_text(std::span<const Index> vertices) {
     std::string s = "[";
     const std::size_t shown = std::min(vertices.size(), kShownVertices);
     for (std::size_t i = 0; i < shown; ++i) {
@@ -71,7 +72,7 @@ std::vector<Index> Reference::cycle_vertices(Index c) const {
 
 std::string AnswerCycles::label(std::size_t i) const {
     const std::string text = cycle_text((*cycles)[i]);
-    if (through.empty()) return "answer cycle " + std::to_string(i) + " " + text;
+    if (through.empty()) return "answer cycle " + std::to_string(numbering ? (*numbering)[i] : i) + " " + text;
     return "the answer's cycle through " + through[i].str() + " " + text;
 }
 
@@ -87,7 +88,7 @@ struct AnswerHalfEdges {
 
 // Maps cycle i to reference half-edges, or reports why it cannot.
 bool map_cycle(const Reference& ref, const AnswerCycles& answer, std::size_t i, AnswerHalfEdges& hs, Collector& out) {
-    const std::vector<Index>& c = (*answer.cycles)[i];
+    const std::span<const Index> c = (*answer.cycles)[i];
     const auto vertices = static_cast<Index>(ref.dcel().num_vertices());
     if (c.empty()) {
         if (out.wants(DifferenceKind::ExtraCycle)) {
@@ -197,7 +198,7 @@ CycleMatch match_cycles(const Reference& ref, const AnswerCycles& answer, Collec
                 out.add(DifferenceKind::ReversedCycle,
                         answer.label(i) + " is the reference cycle " + cycle_text(ref.cycle_vertices(r)) +
                             " walked backwards (wrong orientation)",
-                        (*answer.cycles)[i]);
+                        as_vector((*answer.cycles)[i]));
             }
         } else {
             reversal_of[i] = r;
@@ -256,7 +257,7 @@ CycleMatch match_cycles(const Reference& ref, const AnswerCycles& answer, Collec
                 why = " is not a boundary cycle of the reference";
             }
         }
-        out.add(DifferenceKind::ExtraCycle, answer.label(i) + why, (*answer.cycles)[i]);
+        out.add(DifferenceKind::ExtraCycle, answer.label(i) + why, as_vector((*answer.cycles)[i]));
     }
     return m;
 }

@@ -38,8 +38,11 @@ private:
 // How the answer names its cycles in messages: "answer cycle 3 [0, 1, 2]"
 // for a faces answer, "the answer's cycle through h5 [0, 1, 2]" for a dump.
 struct AnswerCycles {
-    const FacesAnswer* cycles = nullptr;
+    const CycleList* cycles = nullptr;
     std::vector<HalfEdgeId> through;  // dumps: one answer half-edge per cycle; empty for faces
+    // Faces: the number the answer gave cycle i, when some were set aside
+    // before matching (null: cycle i is answer cycle i).
+    const std::vector<std::size_t>* numbering = nullptr;
     [[nodiscard]] std::string label(std::size_t i) const;
 };
 
@@ -62,6 +65,6 @@ struct CycleMatch {
 CycleMatch match_cycles(const Reference& ref, const AnswerCycles& answer, Collector& out);
 
 // "[0, 1, 2]"; long cycles are cut after a dozen vertices.
-[[nodiscard]] std::string cycle_text(const std::vector<Index>& vertices);
+[[nodiscard]] std::string cycle_text(std::span<const Index> vertices);
 
 }  // namespace dcel::check::detail

@@ -13,13 +13,13 @@ DumpCycles dump_cycles(const DcelDump& d) {
         if (c.cycle_of[h] != kNoIndex) continue;
         const auto k = static_cast<Index>(c.cycles.size());
         c.through.emplace_back(h);
-        std::vector<Index>& cycle = c.cycles.emplace_back();
         Index x = h;
         do {  // next is a permutation, so the walk comes back to h
             c.cycle_of[x] = k;
-            cycle.push_back(d.half_edges[x].origin.index());
+            c.cycles.ids.push_back(d.half_edges[x].origin.index());
             x = d.half_edges[x].next.index();
         } while (x != h);
+        c.cycles.end_cycle();
     }
     return c;
 }
@@ -141,7 +141,8 @@ private:
             const Role want = ref_role_[r];
             const Role got = answer_role_[k];
             const std::string cycle = labels_.label(k);
-            const std::vector<Index>& vs = cycles_.cycles[k];
+            const std::span<const Index> span = cycles_.cycles[k];
+            const std::vector<Index> vs(span.begin(), span.end());
             if (want.outer) {
                 if (got.face != kNoIndex && got.outer) continue;
                 if (!out_.wants(DifferenceKind::WrongOuterBoundary)) continue;

@@ -12,7 +12,7 @@
 namespace dcel::check::detail {
 
 struct DumpCycles {
-    FacesAnswer cycles;               // origins along next, from the smallest half-edge
+    CycleList cycles;                 // origins along next, from the smallest half-edge
     std::vector<HalfEdgeId> through;  // that smallest half-edge, per cycle
     std::vector<Index> cycle_of;      // per half-edge of the dump
 };

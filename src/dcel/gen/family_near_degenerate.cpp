@@ -5,35 +5,40 @@
 // an exact, increasing affine map: a large offset with tiny differences, tiny
 // magnitudes, or subnormals, with some zeros turned into -0.0. An increasing
 // affine map per axis keeps every orientation sign, so validity and the
-// combinatorial answer are unchanged.
+// combinatorial answer are unchanged. The maps are one-to-one, so the vertex
+// count is the base family's (exactly n), and so is the cost.
 #include <cmath>
 
 #include "dcel/gen/families.hpp"
-#include "dcel/gen/graph_builder.hpp"
 
 namespace dcel::gen::detail {
 namespace {
 
+// Valid by design: the P_i are distinct points of a line that misses the
+// centre, so the rays to them have distinct directions and meet only at the
+// centre; each Q_i = -P_i lies on the opposite ray. Chain edges join
+// consecutive lattice points of one line (nothing between them) and meet a
+// ray only where it ends. O(n).
 PlanarGraph thin_fan(Rng& rng, std::size_t n) {
-    GraphBuilder b;
-    if (n == 0) return b.take();
+    PlanarGraph g;
+    if (n == 0) return g;
     const std::int64_t N = (std::int64_t{1} << rng.between(20, 50)) + rng.between(0, 1 << 20);
-    const VertexId centre = *b.add_point(at(0, 0));
+    g.vertices.push_back(at(0, 0));
+    const VertexId centre(0);
     // P_i = (N + i, N + i + 1) on y = x + 1, and Q_i = -P_i on y = x - 1:
     // the cross product of consecutive points is -1 (a triangle of area 1/2).
-    const std::size_t per_side = (n - 1) / 2 + 1;
+    const std::size_t on_p_side = n / 2;  // and the other n - 1 - n / 2 on the Q side
     for (const std::int64_t sign : {1, -1}) {
-        std::optional<VertexId> previous;
-        for (std::size_t i = 0; i < per_side && b.num_vertices() < n; ++i) {
+        const std::size_t count = sign == 1 ? on_p_side : n - 1 - on_p_side;
+        for (std::size_t i = 0; i < count; ++i) {
             const auto k = static_cast<std::int64_t>(i);
-            const std::optional<VertexId> p = b.add_point(at(sign * (N + k), sign * (N + k + 1)));
-            if (!p) continue;
-            if (rng.chance(3, 4)) (void)b.add_edge(centre, *p);
-            if (previous && rng.chance(3, 4)) (void)b.add_edge(*previous, *p);
-            previous = p;
+            g.vertices.push_back(at(sign * (N + k), sign * (N + k + 1)));
+            const VertexId p(static_cast<Index>(g.vertices.size() - 1));
+            if (rng.chance(3, 4)) g.edges.push_back({centre, p});
+            if (i > 0 && rng.chance(3, 4)) g.edges.push_back({VertexId(p.index() - 1), p});
         }
     }
-    return b.take();
+    return g;
 }
 
 PlanarGraph base_graph(Rng& rng, std::size_t n) {

@@ -1,7 +1,8 @@
-// Families built from random integer points: random non-crossing segments,
-// subsets of a triangulation, and random trees.
+// Families built from random integer points: random non-crossing segments
+// (or one big simple polygon through all the points), subsets of a
+// triangulation, and random trees.
 #include <algorithm>
-#include <cmath>
+#include <numeric>
 
 #include "dcel/gen/families.hpp"
 #include "dcel/gen/graph_builder.hpp"
@@ -9,91 +10,138 @@
 namespace dcel::gen::detail {
 namespace {
 
-// The side of the square the points come from. A tight square (about as many
-// lattice points as vertices) makes collinear triples, shared directions and
-// touching candidates common; a loose one gives general position.
-std::int64_t point_square(Rng& rng, std::size_t n) {
-    const auto root = static_cast<std::int64_t>(std::sqrt(static_cast<double>(n))) + 2;
-    switch (rng.below(3)) {
-        case 0: return root;
-        case 1: return 3 * root;
-        default: return 64 * root;
-    }
+PlanarGraph with_edges(std::vector<Point> points, std::vector<GraphEdge> edges) {
+    return {std::move(points), std::move(edges)};
 }
 
-void add_random_points(GraphBuilder& b, Rng& rng, std::size_t n, std::int64_t side) {
-    for (std::size_t tries = 0; b.num_vertices() < n && tries < 4 * n; ++tries) {
-        (void)b.add_point(at(rng.between(0, side - 1), rng.between(0, side - 1)));
+// Points in [0, side)^2 sorted by square cell (row by row), so that each
+// cell's points are one run of ids: a random near neighbour is O(1), and
+// near pairs have near ids (the builder's arrays stay in cache).
+class NearPoints {
+public:
+    NearPoints(std::vector<Point>& p, std::int64_t side, std::int64_t cell)
+        : cell_(cell), across_(side / cell + 1), start_(static_cast<std::size_t>(across_ * across_) + 1, 0), points_(&p) {
+        std::vector<Point> sorted(p.size());
+        for (const Point& q : p) ++start_[index(q) + 1];
+        std::partial_sum(start_.begin(), start_.end(), start_.begin());
+        std::vector<Index> next(start_.begin(), start_.end() - 1);
+        for (const Point& q : p) sorted[next[index(q)]++] = q;
+        p = std::move(sorted);
     }
+    // A random point in the cell of point i or one of its eight neighbours,
+    // or i itself when that cell is empty or off the grid.
+    Index near(Index i, Rng& rng) const {
+        const Point q = (*points_)[i];
+        const std::int64_t cx = static_cast<std::int64_t>(q.x) / cell_ + rng.between(-1, 1);
+        const std::int64_t cy = static_cast<std::int64_t>(q.y) / cell_ + rng.between(-1, 1);
+        if (cx < 0 || cy < 0 || cx >= across_ || cy >= across_) return i;
+        const auto c = static_cast<std::size_t>(cy * across_ + cx);
+        const Index count = start_[c + 1] - start_[c];
+        return count == 0 ? i : start_[c] + static_cast<Index>(rng.below(count));
+    }
+
+private:
+    [[nodiscard]] std::size_t index(Point q) const {
+        return static_cast<std::size_t>(static_cast<std::int64_t>(q.y) / cell_ * across_ +
+                                        static_cast<std::int64_t>(q.x) / cell_);
+    }
+    std::int64_t cell_, across_;
+    std::vector<Index> start_;
+    const std::vector<Point>* points_;
+};
+
+// Disjoint sets with path halving, for Kruskal.
+class Forest {
+public:
+    explicit Forest(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), Index{0}); }
+    Index root(Index v) {
+        while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+        return v;
+    }
+    bool join(Index a, Index b) {
+        a = root(a);
+        b = root(b);
+        if (a == b) return false;
+        parent_[a] = b;
+        return true;
+    }
+
+private:
+    std::vector<Index> parent_;
+};
+
+std::int64_t squared_length(const std::vector<Point>& p, const GraphEdge& e) {
+    const auto dx = static_cast<std::int64_t>(p[e.u.index()].x - p[e.v.index()].x);
+    const auto dy = static_cast<std::int64_t>(p[e.u.index()].y - p[e.v.index()].y);
+    return dx * dx + dy * dy;
 }
 
 }  // namespace
 
+// One time in four, a simple polygon through all n points (valid by design,
+// see monotone_polygon). Otherwise the points joined by random segments that
+// GraphBuilder accepts: about sqrt(n) attempts between random pairs (long
+// segments, O(sqrt n) grid cells each), then 3n between near pairs (O(1)
+// cells each). O(n log n) either way.
 PlanarGraph random_segments(Rng& rng, std::size_t n) {
-    GraphBuilder b;
-    add_random_points(b, rng, n, point_square(rng, n));
-    const std::size_t v = b.num_vertices();
-    if (v < 2) return b.take();
-    // Near pairs survive far more often than random ones; mix both.
-    for (std::size_t tries = 0; tries < 4 * v; ++tries) {
+    const std::int64_t side = point_square(rng, n);
+    std::vector<Point> points = distinct_points(rng, n, side);
+    if (n >= 3 && rng.chance(1, 4)) {
+        std::vector<GraphEdge> ring = monotone_polygon(points);
+        return with_edges(std::move(points), std::move(ring));
+    }
+    // Cells about two point spacings wide hold a few points each.
+    const std::int64_t cell = std::max<std::int64_t>(1, 2 * side / (isqrt(n) + 1));
+    const NearPoints near(points, side, cell);
+    GraphBuilder b(cell);
+    for (const Point& p : points) (void)b.add_point(p);  // distinct, and no edge yet
+    if (n < 2) return b.take();
+    const auto v = static_cast<Index>(n);
+    for (std::int64_t tries = isqrt(n) + 2; tries > 0; --tries) {
+        (void)b.add_edge(VertexId(static_cast<Index>(rng.below(v))), VertexId(static_cast<Index>(rng.below(v))));
+    }
+    for (std::size_t tries = 0; tries < 3 * n; ++tries) {
         const auto u = static_cast<Index>(rng.below(v));
-        const auto w = rng.chance(1, 2) ? static_cast<Index>(rng.below(v))
-                                        : static_cast<Index>((u + 1 + rng.below(std::min<std::size_t>(v - 1, 6))) % v);
-        (void)b.add_edge(VertexId(u), VertexId(w));
+        (void)b.add_edge(VertexId(u), VertexId(near.near(u, rng)));
     }
     return b.take();
 }
 
+// The sweep triangulation of n random points (valid by design, see
+// sweep_triangulation), then each edge kept with probability 1/4, 2/4, 3/4
+// or 1 (dropping edges keeps a graph valid). O(n log n).
 PlanarGraph triangulation(Rng& rng, std::size_t n) {
-    GraphBuilder b;
-    add_random_points(b, rng, std::min<std::size_t>(n, 160), point_square(rng, n));
-    const auto v = static_cast<Index>(b.num_vertices());
-    // Greedy: shortest pairs first, each kept when it meets nothing. The
-    // result is maximal, so its bounded faces are triangles (a triangulation
-    // of the points, collinear points included).
-    struct Pair {
-        std::int64_t length2;
-        std::uint64_t tie;
-        Index u, w;
-    };
-    std::vector<Pair> pairs;
-    const PlanarGraph& g = b.graph();
-    for (Index u = 0; u < v; ++u) {
-        for (Index w = u + 1; w < v; ++w) {
-            const auto dx = static_cast<std::int64_t>(g.vertices[u].x - g.vertices[w].x);
-            const auto dy = static_cast<std::int64_t>(g.vertices[u].y - g.vertices[w].y);
-            pairs.push_back({dx * dx + dy * dy, rng.next(), u, w});
-        }
-    }
-    std::sort(pairs.begin(), pairs.end(),
-              [](const Pair& a, const Pair& c) { return a.length2 != c.length2 ? a.length2 < c.length2 : a.tie < c.tie; });
-    for (const Pair& p : pairs) (void)b.add_edge(VertexId(p.u), VertexId(p.w));
-    // Keep a random subset: dropping edges never breaks validity.
-    PlanarGraph t = b.take();
-    const std::uint64_t keep = 1 + rng.below(4);  // keep each edge with probability keep/4
+    std::vector<Point> points = distinct_points(rng, n, point_square(rng, n));
+    std::vector<GraphEdge> all = sweep_triangulation(points);
+    const std::uint64_t keep = 1 + rng.below(4);
     std::vector<GraphEdge> kept;
-    for (const GraphEdge& e : t.edges) {
-        if (rng.chance(keep, 4)) kept.push_back(e);
+    for (const GraphEdge& e : all) {
+        if (keep == 4 || rng.chance(keep, 4)) kept.push_back(e);
     }
-    t.edges = std::move(kept);
-    return t;
+    return with_edges(std::move(points), std::move(kept));
 }
 
+// A random spanning tree of the sweep triangulation of n random points
+// (Kruskal over its edges in random order, or shortest first): a subgraph of
+// a valid graph, so valid. One time in three a forest: a few tree edges
+// dropped, leaving components and isolated vertices. O(n log n).
 PlanarGraph tree(Rng& rng, std::size_t n) {
-    GraphBuilder b;
-    const std::int64_t side = point_square(rng, n) * 2;
-    if (n == 0) return b.take();
-    (void)b.add_point(at(rng.between(0, side - 1), rng.between(0, side - 1)));
-    for (std::size_t tries = 0; b.num_vertices() < n && tries < 4 * n; ++tries) {
-        const std::optional<VertexId> p = b.add_point(at(rng.between(0, side - 1), rng.between(0, side - 1)));
-        if (!p) continue;
-        // Attach to an earlier vertex; a vertex that cannot be attached stays
-        // isolated (the forest gains a component).
-        for (int attempt = 0; attempt < 8; ++attempt) {
-            if (b.add_edge(*p, VertexId(static_cast<Index>(rng.below(p->index()))))) break;
-        }
+    std::vector<Point> points = distinct_points(rng, n, point_square(rng, n) * 2);
+    std::vector<GraphEdge> candidates = sweep_triangulation(points);
+    rng.shuffle(candidates);
+    if (rng.chance(1, 2)) {
+        std::stable_sort(candidates.begin(), candidates.end(), [&](const GraphEdge& a, const GraphEdge& c) {
+            return squared_length(points, a) < squared_length(points, c);
+        });
     }
-    return b.take();
+    const bool forest = rng.chance(1, 3);
+    Forest sets(n);
+    std::vector<GraphEdge> edges;
+    for (const GraphEdge& e : candidates) {
+        if (!sets.join(e.u.index(), e.v.index())) continue;
+        if (!forest || !rng.chance(1, 16)) edges.push_back(e);
+    }
+    return with_edges(std::move(points), std::move(edges));
 }
 
 }  // namespace dcel::gen::detail

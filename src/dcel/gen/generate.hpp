@@ -40,7 +40,7 @@ enum class Family : std::uint8_t {
 struct Params {
     Family family = Family::RandomSegments;
     std::uint64_t seed = 0;
-    std::size_t vertices = 16;  // target size; a family may produce somewhat fewer
+    std::size_t vertices = 16;  // every family gives exactly this many vertices
 };
 
 // A valid planar straight-line graph: build() accepts it. Deterministic.
@@ -63,9 +63,60 @@ enum class Transform : std::uint8_t {
 enum class Defect : std::uint8_t { Crossing, Touch, Overlap };
 [[nodiscard]] std::optional<PlanarGraph> plant(const PlanarGraph& g, Defect d, std::uint64_t seed);
 
-// Smaller valid graphs derived from g, most aggressive first: drop edges,
-// drop vertices (renumbering), snap coordinates to small integers where no
-// crossing, touch or overlap appears. Every candidate is valid.
+// Smaller valid graphs derived from g, most aggressive first, one at a time:
+// the empty graph, the isolated vertices dropped, each component alone and
+// each dropped, runs of edges dropped, vertices dropped, degree-2 vertices merged away (a-v-b becomes a-b), edges
+// contracted, coordinates snapped towards small integers (shrink.cpp has the
+// details). Every candidate is valid. Holds one candidate at a time, so it
+// serves graphs of any size; each next() costs O(V + E) (O(V E) for a
+// contraction's checks).
+class ShrinkCandidates {
+public:
+    enum class Stage : std::uint8_t {
+        Empty,
+        Isolated,
+        Components,
+        Edges,
+        Vertices,
+        MergeDegree2,
+        Contract,
+        GlobalSnaps,
+        Moves,
+        Done
+    };
+    // Where in the order a candidate came from: a shrinker that moved to a
+    // candidate starts the next graph's candidates there (the steps before
+    // it failed on a larger graph and rarely succeed on a smaller one), and
+    // goes back to the start only when nothing from there on works.
+    struct Position {
+        Stage stage = Stage::Empty;
+        std::size_t chunk = 0;  // Edges: the run length (0: all of the edges)
+    };
+
+    explicit ShrinkCandidates(PlanarGraph g);
+    ShrinkCandidates(PlanarGraph g, Position start);
+    // The next candidate, or nothing when there are no more.
+    [[nodiscard]] std::optional<PlanarGraph> next();
+    // The position of the candidate next() returned last.
+    [[nodiscard]] Position position() const { return last_; }
+
+private:
+    [[nodiscard]] std::optional<PlanarGraph> step();
+    void next_stage(Stage s);
+
+    PlanarGraph g_;
+    std::size_t fractions_ = 0;  // non-integer coordinates of g_
+    Stage stage_ = Stage::Empty;
+    bool isolated_first_ = false;
+    Position last_;
+    std::size_t index_ = 0;
+    std::size_t chunk_ = 0;
+    std::vector<Index> component_of_;
+    std::size_t components_ = 0;
+    std::vector<std::vector<std::size_t>> incident_;
+};
+
+// All of ShrinkCandidates' candidates at once (for small graphs).
 [[nodiscard]] std::vector<PlanarGraph> shrink_candidates(const PlanarGraph& g);
 
 // Greedy shrinking: repeatedly moves to the first candidate for which

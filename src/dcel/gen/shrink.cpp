@@ -1,16 +1,36 @@
 // Shrinking: smaller valid graphs derived from a valid one, most aggressive
-// first. Dropping edges or vertices keeps a graph valid (a subset of
-// non-crossing segments and distinct points is still one), so those
-// candidates need no check. Moving points can create contacts, so every
-// snapped candidate is checked by brute force: the whole graph for a global
-// snap, the moved vertex against everything for a single one.
+// first, made one at a time (ShrinkCandidates), so that shrinking a large
+// graph holds one candidate in memory, not thousands.
+//
+// The steps, in order:
+//   1. the empty graph;
+//   2. every isolated vertex at once;
+//   3. each connected component alone, then each dropped (when there are
+//      several);
+//   4. runs of edges dropped: all of them, then halves, quarters, ..., single
+//      edges; then each vertex with its edges;
+//   5. each vertex of degree 2 merged away: a-v-b becomes the edge a-b;
+//   6. each edge contracted: v is removed and its other edges go to u;
+//   7. global snaps towards small integers: exact ones first (a power-of-two
+//      scaling to integers or down to them, a translation to the origin),
+//      then ranks, rounding, halving;
+//   8. one vertex at a time moved towards small integers.
+// Steps 5 and 6 keep cycles closed while they remove vertices, so a failure
+// that needs a face survives them. Dropping edges or vertices keeps a graph
+// valid (a subset of non-crossing segments and distinct points is still one);
+// every other step is checked by brute force, against the moved vertex or the
+// new edges only where the rest is unchanged.
 //
 // Termination: every candidate is smaller in (edges, vertices, non-integer
 // coordinates, coordinate magnitudes), compared in that order; the last part
-// only ever decreases pointwise (no coordinate grows, one shrinks).
+// only ever decreases pointwise (no coordinate grows, one shrinks). Steps 5
+// and 6 remove a vertex and an edge each.
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <set>
 
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/generate.hpp"
@@ -50,8 +70,9 @@ PlanarGraph without_edges(const PlanarGraph& g, std::size_t begin, std::size_t e
 }
 
 // g without the vertices for which drop[v] holds, nor their edges; the
-// remaining vertices keep their order and are renumbered.
-PlanarGraph without_vertices(const PlanarGraph& g, const std::vector<char>& drop) {
+// remaining vertices keep their order and are renumbered. `extra` edges (in
+// old ids) are appended.
+PlanarGraph without_vertices(const PlanarGraph& g, const std::vector<char>& drop, const std::vector<GraphEdge>& extra = {}) {
     PlanarGraph out;
     std::vector<Index> new_id(g.vertices.size(), kNoIndex);
     for (std::size_t v = 0; v < g.vertices.size(); ++v) {
@@ -59,11 +80,13 @@ PlanarGraph without_vertices(const PlanarGraph& g, const std::vector<char>& drop
         new_id[v] = static_cast<Index>(out.vertices.size());
         out.vertices.push_back(g.vertices[v]);
     }
-    for (const GraphEdge& e : g.edges) {
+    auto keep = [&](const GraphEdge& e) {
         if (drop[e.u.index()] == 0 && drop[e.v.index()] == 0) {
             out.edges.push_back({VertexId(new_id[e.u.index()]), VertexId(new_id[e.v.index()])});
         }
-    }
+    };
+    for (const GraphEdge& e : g.edges) keep(e);
+    for (const GraphEdge& e : extra) keep(e);
     return out;
 }
 
@@ -100,6 +123,45 @@ std::optional<PlanarGraph> scaled_to_integers(const PlanarGraph& g) {
     return apply(g, Transform::ScalePow2, k);
 }
 
+// Divided by the largest power of two that divides every coordinate (exact:
+// huge coordinates that are small integers times 2^k become those integers).
+std::optional<PlanarGraph> scaled_down(const PlanarGraph& g) {
+    int k = INT_MAX;
+    for (const Point& p : g.vertices) {
+        for (const double v : {p.x, p.y}) {
+            if (v == 0) continue;
+            int e = 0;
+            const double m = std::frexp(v, &e);                        // v = m 2^e, m in [0.5, 1)
+            auto bits = static_cast<std::int64_t>(std::ldexp(m, 53));  // v = bits 2^(e - 53), exactly
+            int tz = 0;
+            while ((bits & 1) == 0) {
+                bits >>= 1;
+                ++tz;
+            }
+            k = std::min(k, e - 53 + tz);
+        }
+    }
+    if (k == INT_MAX || k <= 0) return std::nullopt;
+    return apply(g, Transform::ScalePow2, -k);
+}
+
+// Moved so that the smallest x and the smallest y are 0, when that is exact.
+std::optional<PlanarGraph> moved_to_origin(const PlanarGraph& g) {
+    if (g.vertices.empty()) return std::nullopt;
+    double mx = g.vertices[0].x, my = g.vertices[0].y;
+    for (const Point& p : g.vertices) {
+        mx = std::min(mx, p.x);
+        my = std::min(my, p.y);
+    }
+    PlanarGraph out = g;
+    for (Point& p : out.vertices) {
+        const Point q{p.x - mx, p.y - my};
+        if (q.x + mx != p.x || q.y + my != p.y) return std::nullopt;  // rounded
+        p = q;
+    }
+    return out;
+}
+
 double halved(double v) { return std::trunc(v / 2); }
 
 // Is g still valid after vertex v moved? (g is valid apart from v's move.)
@@ -128,79 +190,285 @@ bool move_is_valid(const PlanarGraph& g, Index v) {
     return true;
 }
 
+// Can the segment a-b (vertices of g) join g, ignoring the edges in `gone`
+// and the vertex `removed`? No duplicate, no contact with another edge, no
+// vertex inside it.
+bool new_edge_fits(const PlanarGraph& g, Index a, Index b, const std::vector<char>& gone, Index removed) {
+    if (a == b) return false;
+    const Point pa = g.vertices[a], pb = g.vertices[b];
+    for (std::size_t k = 0; k < g.edges.size(); ++k) {
+        if (gone[k] != 0) continue;
+        const GraphEdge& e = g.edges[k];
+        const Index u = e.u.index(), v = e.v.index();
+        if ((u == a && v == b) || (u == b && v == a)) return false;
+        if (segments_conflict(pa, pb, g.vertices[u], g.vertices[v])) return false;
+    }
+    for (Index w = 0; w < g.vertices.size(); ++w) {
+        if (w != a && w != b && w != removed && on_closed_segment(pa, pb, g.vertices[w])) return false;
+    }
+    return true;
+}
+
+// The edges of each vertex, as edge indexes.
+std::vector<std::vector<std::size_t>> incidence(const PlanarGraph& g) {
+    std::vector<std::vector<std::size_t>> inc(g.vertices.size());
+    for (std::size_t k = 0; k < g.edges.size(); ++k) {
+        inc[g.edges[k].u.index()].push_back(k);
+        inc[g.edges[k].v.index()].push_back(k);
+    }
+    return inc;
+}
+
+Index other_end(const GraphEdge& e, Index v) { return e.u.index() == v ? e.v.index() : e.u.index(); }
+
 }  // namespace
+
+ShrinkCandidates::ShrinkCandidates(PlanarGraph g) : ShrinkCandidates(std::move(g), Position{}) {}
+
+ShrinkCandidates::ShrinkCandidates(PlanarGraph g, Position start) : g_(std::move(g)), fractions_(non_integers(g_)) {
+    chunk_ = g_.edges.size();
+    stage_ = start.stage == Stage::Done ? Stage::Empty : start.stage;
+    // Resuming past it, the one cheap candidate that drops every isolated
+    // vertex still comes first: removing edges leaves vertices bare.
+    isolated_first_ = stage_ > Stage::Isolated;
+    if (stage_ == Stage::Edges && start.chunk != 0) chunk_ = std::min(start.chunk, chunk_);
+}
+
+std::optional<PlanarGraph> ShrinkCandidates::next() {
+    if (isolated_first_) {
+        isolated_first_ = false;
+        std::vector<char> isolated(g_.vertices.size(), 1);
+        for (const GraphEdge& ge : g_.edges) isolated[ge.u.index()] = isolated[ge.v.index()] = 0;
+        if (std::count(isolated.begin(), isolated.end(), 1) > 1) {
+            last_ = {Stage::Isolated, 0};
+            return without_vertices(g_, isolated);
+        }
+    }
+    for (;;) {
+        const Position here{stage_, stage_ == Stage::Edges ? chunk_ : 0};
+        std::optional<PlanarGraph> c = step();
+        if (c) {
+            last_ = here;
+            return c;
+        }
+        if (stage_ == Stage::Done) return std::nullopt;
+    }
+}
+
+std::optional<PlanarGraph> ShrinkCandidates::step() {
+    const std::size_t n = g_.vertices.size();
+    const std::size_t e = g_.edges.size();
+    switch (stage_) {
+        case Stage::Empty:
+            stage_ = Stage::Isolated;
+            if (n == 0) {
+                stage_ = Stage::Done;
+                return std::nullopt;
+            }
+            return PlanarGraph{};
+        case Stage::Components: {
+            // First each component alone (a failure inside one component
+            // shrinks to it at once), then each component dropped.
+            if (component_of_.empty() && n > 0) {
+                // Union-find over the edges: the components, numbered by first vertex.
+                std::vector<Index> parent(n);
+                std::iota(parent.begin(), parent.end(), Index{0});
+                auto find = [&](Index x) {
+                    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+                    return x;
+                };
+                for (const GraphEdge& ge : g_.edges) parent[find(ge.u.index())] = find(ge.v.index());
+                std::map<Index, Index> number;
+                component_of_.resize(n);
+                for (Index v = 0; v < n; ++v) {
+                    component_of_[v] = number.emplace(find(v), static_cast<Index>(number.size())).first->second;
+                }
+                components_ = number.size();
+            }
+            if (components_ < 2 || index_ >= 2 * components_) {
+                next_stage(Stage::Edges);
+                return std::nullopt;
+            }
+            const bool keep_only = index_ < components_;
+            const std::size_t k = index_ % components_;
+            ++index_;
+            std::vector<char> drop(n, 0);
+            for (Index v = 0; v < n; ++v) drop[v] = static_cast<char>((component_of_[v] == k) != keep_only);
+            return without_vertices(g_, drop);
+        }
+        case Stage::Edges: {
+            if (chunk_ == 0 || e == 0) {
+                next_stage(Stage::Vertices);
+                return std::nullopt;
+            }
+            if (index_ >= e) {
+                if (chunk_ == 1) {
+                    next_stage(Stage::Vertices);
+                    return std::nullopt;
+                }
+                chunk_ /= 2;
+                index_ = 0;
+            }
+            const std::size_t begin = index_;
+            index_ += chunk_;
+            return without_edges(g_, begin, std::min(e, begin + chunk_));
+        }
+        case Stage::Isolated: {
+            next_stage(Stage::Components);
+            std::vector<char> isolated(n, 1);
+            for (const GraphEdge& ge : g_.edges) isolated[ge.u.index()] = isolated[ge.v.index()] = 0;
+            if (std::count(isolated.begin(), isolated.end(), 1) > 1) return without_vertices(g_, isolated);
+            return std::nullopt;
+        }
+        case Stage::Vertices: {
+            if (index_ >= n) {
+                next_stage(Stage::MergeDegree2);
+                return std::nullopt;
+            }
+            std::vector<char> drop(n, 0);
+            drop[index_++] = 1;
+            return without_vertices(g_, drop);
+        }
+        case Stage::MergeDegree2: {
+            if (incident_.empty()) incident_ = incidence(g_);
+            if (index_ >= n) {
+                next_stage(Stage::Contract);
+                return std::nullopt;
+            }
+            const auto v = static_cast<Index>(index_++);
+            if (incident_[v].size() != 2) return std::nullopt;
+            const Index a = other_end(g_.edges[incident_[v][0]], v);
+            const Index b = other_end(g_.edges[incident_[v][1]], v);
+            std::vector<char> gone(e, 0);
+            gone[incident_[v][0]] = gone[incident_[v][1]] = 1;
+            if (!new_edge_fits(g_, a, b, gone, v)) return std::nullopt;
+            std::vector<char> drop(n, 0);
+            drop[v] = 1;
+            return without_vertices(g_, drop, {{VertexId(a), VertexId(b)}});
+        }
+        case Stage::Contract: {
+            if (incident_.empty()) incident_ = incidence(g_);
+            if (index_ >= e) {
+                next_stage(Stage::GlobalSnaps);
+                return std::nullopt;
+            }
+            // Edge u-v: v goes, its other edges go to u. Only a vertex of low
+            // degree: checking many new edges costs O(degree E).
+            constexpr std::size_t kMaxContractedDegree = 8;
+            const GraphEdge& ge = g_.edges[index_++];
+            const Index u = ge.u.index(), v = ge.v.index();
+            if (incident_[v].size() > kMaxContractedDegree) return std::nullopt;
+            std::vector<char> gone(e, 0);
+            for (const std::size_t k : incident_[v]) gone[k] = 1;
+            std::vector<GraphEdge> moved;
+            for (const std::size_t k : incident_[v]) {
+                const Index w = other_end(g_.edges[k], v);
+                if (w == u) continue;
+                if (!new_edge_fits(g_, u, w, gone, v)) return std::nullopt;
+                // The new edges share u; they must not overlap one another.
+                for (const GraphEdge& m : moved) {
+                    if (segments_conflict(g_.vertices[u], g_.vertices[w], g_.vertices[u], g_.vertices[m.v.index()])) {
+                        return std::nullopt;
+                    }
+                }
+                moved.push_back({VertexId(u), VertexId(w)});
+            }
+            std::vector<char> drop(n, 0);
+            drop[v] = 1;
+            return without_vertices(g_, drop, moved);
+        }
+        case Stage::GlobalSnaps: {
+            const std::size_t which = index_++;
+            std::optional<PlanarGraph> c;
+            switch (which) {
+                // The exact maps first (the graph keeps its shape), then the
+                // ones that move points relative to each other.
+                case 0: c = scaled_to_integers(g_); break;
+                case 1: c = scaled_down(g_); break;
+                case 2: c = moved_to_origin(g_); break;
+                case 3: c = ranks(g_); break;
+                case 4: {
+                    c = g_;
+                    for (Point& p : c->vertices) p = {std::round(p.x), std::round(p.y)};
+                    break;
+                }
+                case 5: {
+                    c = g_;
+                    for (Point& p : c->vertices) {
+                        p = {is_integer(p.x) ? halved(p.x) : p.x, is_integer(p.y) ? halved(p.y) : p.y};
+                    }
+                    break;
+                }
+                default: next_stage(Stage::Moves); return std::nullopt;
+            }
+            if (!c) return std::nullopt;
+            const std::size_t fractions = non_integers(*c);
+            const bool smaller = fractions < fractions_ || (fractions == fractions_ && magnitudes_shrank(g_, *c));
+            if (!smaller || find_problem(*c)) return std::nullopt;
+            return c;
+        }
+        case Stage::Moves: {
+            // Vertex index_ / 3, target index_ % 3: round a fractional point,
+            // or halve an integer one's coordinates (both, or one of them).
+            if (index_ >= 3 * n) {
+                stage_ = Stage::Done;
+                return std::nullopt;
+            }
+            const auto v = static_cast<Index>(index_ / 3);
+            const std::size_t t = index_++ % 3;
+            const Point p = g_.vertices[v];
+            Point target = p;
+            if (!is_integer(p.x) || !is_integer(p.y)) {
+                if (t != 0) return std::nullopt;
+                target = {std::round(p.x), std::round(p.y)};
+            } else {
+                target = t == 0   ? Point{halved(p.x), halved(p.y)}
+                         : t == 1 ? Point{halved(p.x), p.y}
+                                  : Point{p.x, halved(p.y)};
+            }
+            if (target == p) return std::nullopt;
+            PlanarGraph c = g_;
+            c.vertices[v] = target;
+            const bool smaller = non_integers(c) < fractions_ || magnitudes_shrank(g_, c);
+            if (!smaller || !move_is_valid(c, v)) return std::nullopt;
+            return c;
+        }
+        case Stage::Done: return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+void ShrinkCandidates::next_stage(Stage s) {
+    stage_ = s;
+    index_ = 0;
+}
 
 std::vector<PlanarGraph> shrink_candidates(const PlanarGraph& g) {
     std::vector<PlanarGraph> out;
-    const std::size_t e = g.edges.size();
-    const std::size_t n = g.vertices.size();
-    if (n == 0) return out;
-    out.emplace_back();  // the empty graph
-    // Edges: all of them, then halves, quarters, ..., single edges.
-    for (std::size_t chunk = e; chunk >= 1; chunk /= 2) {
-        for (std::size_t begin = 0; begin < e; begin += chunk)
-            out.push_back(without_edges(g, begin, std::min(e, begin + chunk)));
-        if (chunk == 1) break;
-    }
-    // Vertices: every isolated one at once, then each vertex with its edges.
-    std::vector<char> isolated(n, 1);
-    for (const GraphEdge& ge : g.edges) isolated[ge.u.index()] = isolated[ge.v.index()] = 0;
-    if (std::count(isolated.begin(), isolated.end(), 1) > 1) out.push_back(without_vertices(g, isolated));
-    for (std::size_t v = 0; v < n; ++v) {
-        std::vector<char> drop(n, 0);
-        drop[v] = 1;
-        out.push_back(without_vertices(g, drop));
-    }
-    // Global snaps, each checked by brute force.
-    const std::size_t fractions = non_integers(g);
-    auto consider = [&](PlanarGraph c) {
-        if ((non_integers(c) < fractions || (non_integers(c) == fractions && magnitudes_shrank(g, c))) && !find_problem(c)) {
-            out.push_back(std::move(c));
-        }
-    };
-    if (std::optional<PlanarGraph> s = scaled_to_integers(g)) consider(std::move(*s));
-    consider(ranks(g));
-    PlanarGraph rounded = g;
-    for (Point& p : rounded.vertices) p = {std::round(p.x), std::round(p.y)};
-    consider(std::move(rounded));
-    PlanarGraph half = g;
-    for (Point& p : half.vertices) p = {is_integer(p.x) ? halved(p.x) : p.x, is_integer(p.y) ? halved(p.y) : p.y};
-    consider(std::move(half));
-    // One vertex at a time: round a fractional point, or halve an integer
-    // one's coordinates (both, or one of them).
-    for (Index v = 0; v < n; ++v) {
-        const Point p = g.vertices[v];
-        std::vector<Point> targets;
-        if (!is_integer(p.x) || !is_integer(p.y)) {
-            targets.push_back({std::round(p.x), std::round(p.y)});
-        } else {
-            targets = {{halved(p.x), halved(p.y)}, {halved(p.x), p.y}, {p.x, halved(p.y)}};
-        }
-        for (const Point target : targets) {
-            if (target == p) continue;
-            PlanarGraph c = g;
-            c.vertices[v] = target;
-            const bool smaller = non_integers(c) < fractions || magnitudes_shrank(g, c);
-            if (smaller && move_is_valid(c, v)) out.push_back(std::move(c));
-        }
-    }
+    ShrinkCandidates candidates(g);
+    while (std::optional<PlanarGraph> c = candidates.next()) out.push_back(std::move(*c));
     return out;
 }
 
 PlanarGraph shrink(PlanarGraph g, const std::function<bool(const PlanarGraph&)>& still_fails, std::size_t max_steps) {
     std::size_t steps = 0;
-    for (bool progress = true; progress;) {
-        progress = false;
-        for (PlanarGraph& c : shrink_candidates(g)) {
+    ShrinkCandidates::Position resume;
+    for (;;) {
+        bool moved = false;
+        ShrinkCandidates candidates(g, resume);
+        while (std::optional<PlanarGraph> c = candidates.next()) {
             if (steps++ >= max_steps) return g;
-            if (still_fails(c)) {
-                g = std::move(c);
-                progress = true;
+            if (still_fails(*c)) {
+                g = std::move(*c);
+                resume = candidates.position();
+                moved = true;
                 break;
             }
         }
+        if (moved) continue;
+        if (resume.stage == ShrinkCandidates::Stage::Empty) return g;  // a whole pass found nothing
+        resume = {};                                                   // once more from the start
     }
-    return g;
 }
 
 }  // namespace dcel::gen

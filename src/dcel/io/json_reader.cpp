@@ -6,6 +6,7 @@
 #include <system_error>
 #include "dcel/contracts.hpp"
 
+#include "dcel/format.hpp"
 #include "dcel/io/decimal.hpp"
 
 namespace dcel::io {
@@ -158,31 +159,8 @@ bool is_identifier(std::string_view key) {
     return std::all_of(key.begin(), key.end(), [](char c) { return is_digit(c) || is_alpha(c) || c == '_'; });
 }
 
-std::string quoted_key(std::string_view key) {
-    std::string out = "\"";
-    std::size_t i = 0;
-    while (i < key.size()) {
-        if (out.size() > kMaxShown) {
-            out += "...";
-            break;
-        }
-        const auto c = static_cast<unsigned char>(key[i]);
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += static_cast<char>(c);
-            ++i;
-        } else if (c < 0x20 || c == 0x7F) {
-            out += "\\u00";
-            out += hex_byte(c);
-            ++i;
-        } else {
-            const std::size_t len = std::max<std::size_t>(utf8_length(key, i), 1);
-            out.append(key.substr(i, len));
-            i += len;
-        }
-    }
-    return out + "\"";
-}
+// A key for a message or path: quoted, escaped, at most kMaxShown bytes.
+std::string quoted_key(std::string_view key) { return quote_for_message(key, kMaxShown); }
 
 // "character 'x'", "control character U+0001", "character U+00E9", "byte 0xFF".
 std::string describe_char(std::string_view s, std::size_t i) {
@@ -356,6 +334,15 @@ void JsonReader::fail_missing_key(std::string_view key, std::string_view form) c
     const std::string p = path();
     throw InvalidInput(InputErrorKind::Shape,
                        (p.empty() ? "" : p + ": ") + "missing key " + quoted_key(key) + ": expected " + std::string(form));
+}
+
+void JsonReader::fail_duplicate_key() const {
+    DCEL_ASSERT(depth_ > 0 && frames_[depth_ - 1].object);
+    std::string where = path(depth_ - 1);
+    if (where.empty()) where = "top level";
+    const std::size_t key_quote = frames_[depth_ - 1].key_begin - 1;
+    throw InvalidInput(InputErrorKind::Shape, where + ": duplicate key " + quoted_key(key_) + " at " + location(key_quote) +
+                                                  ": give each key once");
 }
 
 void JsonReader::fail_unexpected(std::size_t offset, std::string_view expected) const {
@@ -614,13 +601,7 @@ int JsonReader::next_known_member(std::span<const std::string_view> known, std::
         for (std::size_t i = 0; i < known.size(); ++i) {
             if (key_ != known[i]) continue;
             const std::uint64_t bit = std::uint64_t{1} << i;
-            if ((seen & bit) != 0) {
-                std::string where = path(depth_ - 1);
-                if (where.empty()) where = "top level";
-                const std::size_t key_quote = frames_[depth_ - 1].key_begin - 1;
-                throw InvalidInput(InputErrorKind::Shape, where + ": duplicate key " + quoted_key(key_) + " at " +
-                                                              location(key_quote) + ": give each key once");
-            }
+            if ((seen & bit) != 0) fail_duplicate_key();
             seen |= bit;
             return static_cast<int>(i);
         }
@@ -632,6 +613,16 @@ int JsonReader::next_known_member(std::span<const std::string_view> known, std::
 std::uint64_t JsonReader::finish_array() {
     while (next_element()) skip_value();
     return last_closed_count_;
+}
+
+std::string JsonReader::read_string(std::string_view expected) {
+    if (peek() != JsonType::String) fail_type(expected);
+    bool escaped = false;
+    const std::size_t end = scan_string(escaped);
+    const std::string_view raw = text_.substr(pos_ + 1, end - pos_ - 2);
+    std::string value = escaped ? unescape(raw) : std::string(raw);
+    pos_ = end;
+    return value;
 }
 
 void JsonReader::skip_value() {

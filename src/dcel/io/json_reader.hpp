@@ -137,6 +137,8 @@ public:
     [[nodiscard]] Index read_index(std::string_view noun);
     // As read_index, but null reads as kNoIndex.
     [[nodiscard]] Index read_index_or_null(std::string_view noun);
+    // A string, unescaped (Shape error when the value has another type).
+    [[nodiscard]] std::string read_string(std::string_view expected = "a string");
 
     // ---- Locations and errors
     // The JSON path of the current value ("edges[3][1]", "half_edges[7].next");
@@ -157,6 +159,10 @@ public:
     // Shape, after the object was consumed: "<path>: missing key "<key>":
     // expected <form>" (no path prefix at the top level).
     [[noreturn]] void fail_missing_key(std::string_view key, std::string_view form) const;
+    // Shape, at the value of the current member, for a key the caller has
+    // seen before in this object: "<path of the object>: duplicate key
+    // "<key>" at line L, column C: give each key once".
+    [[noreturn]] void fail_duplicate_key() const;
     // Syntax: "line L, column C: <message>".
     [[noreturn]] void fail_syntax(std::size_t offset, std::string_view message) const;
 

@@ -6,11 +6,13 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <string_view>
 
 #include "dcel/ids.hpp"
+#include "dcel/io/json_string.hpp"
 
 namespace dcel::io {
 
@@ -51,6 +53,13 @@ public:
         room(kNumberRoom);
         used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + used_ + kNumberRoom, v).ptr - buf_);
         return true;
+    }
+    // A JSON string literal: quoted, escaped (json_string.hpp).
+    void string(std::string_view text) { raw(json_string(text)); }
+    // An unsigned count or offset.
+    void count(std::uint64_t n) {
+        room(kNumberRoom);
+        used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + used_ + kNumberRoom, n).ptr - buf_);
     }
     // An id; kNoIndex (the null id) is written as null.
     void index(Index i) {

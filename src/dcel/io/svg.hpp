@@ -1,14 +1,24 @@
-// A picture of a DCEL as SVG text, for people: each bounded face tinted in
-// its own colour (the unbounded face left white), every half-edge an arrow on
-// its face's side (the left) in that face's colour, vertices with their ids,
-// isolated vertices as rings. Highlighted cycles (e.g. a counterexample's
-// wrong cycle) are drawn over everything in a warning colour.
+// A picture of a DCEL as SVG text, for people (`dcel render`): each bounded
+// face tinted in its own colour and labelled with its id inside it (f1, f2,
+// ...; f0, the unbounded face, beside the drawing), every half-edge an arrow
+// on its face's side (the left) in that face's colour, vertices with their
+// ids (labels never overlap: moved aside, with a leader line when far), the
+// true coordinates as tooltips and, for small graphs, in a table, and a note
+// on the frame and its scale. Highlighted cycles (vertex cycles, e.g. a wrong
+// answer's) are drawn over everything in red.
 //
-// Coordinates are normalised into a fixed frame, so inputs near 1e15 that
-// differ by 1, or near 1e-300, draw as well as small integers. The drawing is
-// approximate (doubles); no decision is taken from it. No file I/O here.
+// The frame (svg_frame.hpp): exact (one scale) or normalised (each axis
+// stretched monotonically, so that inputs near 1e15 that differ by 1, or
+// subnormals, do not collapse onto one pixel); Auto picks normalised only
+// when the exact frame would draw two distinct points within a few px. Where
+// two edges of a vertex would be drawn in nearly one direction, they leave
+// it spread apart in their exact order and bend towards their other end, so
+// the rotation at every vertex is the DCEL's. The drawing is approximate
+// (doubles); no decision is taken from it. No file I/O here.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,9 +27,14 @@
 
 namespace dcel::io {
 
+enum class SvgFrame : std::uint8_t { Auto, Exact, Normalised };
+
 struct SvgOptions {
     std::string title;                                 // shown on top and as <title>; escaped
-    std::vector<std::vector<Index>> highlight_cycles;  // vertex cycles in a warning colour; bad ids skipped
+    std::vector<std::vector<Index>> highlight_cycles;  // vertex cycles in red; bad ids skipped
+    SvgFrame frame = SvgFrame::Auto;
+    bool face_ids = true;                 // label the faces f0, f1, ...
+    std::size_t max_table_vertices = 40;  // the coordinate table for graphs up to this size
 };
 
 [[nodiscard]] std::string render_svg(const Dcel& dcel, const SvgOptions& options = {});

@@ -1,7 +1,6 @@
 #include "dcel/stab.hpp"
 
 #include <algorithm>
-#include <optional>
 
 #include "dcel/core/finite.hpp"
 #include "dcel/error.hpp"
@@ -32,10 +31,18 @@ struct State {
     static State done() { return {}; }
 };
 
+// One thing on the line the walk may stop at: a vertex on it, or an edge
+// it crosses at an interior point.
+struct Stop {
+    LineEvent event;
+    VertexId vertex;  // a vertex on the line
+    EdgeId edge;      // an edge crossed
+};
+
 class Walk {
 public:
     // A segment walk stops at b; a line walk runs to infinity.
-    Walk(const Dcel& d, Point a, Point b, bool segment) : d_(d), line_(a, b), segment_(segment) {}
+    Walk(const Dcel& d, Point a, Point b, bool segment) : d_(d), line_(a, b), segment_(segment) { collect_stops(); }
 
     std::vector<StabPiece> run(State s) {
         while (s.at != State::At::Done) {
@@ -61,9 +68,40 @@ public:
 
 private:
     [[nodiscard]] Point point(VertexId v) const { return d_.point(v); }
+    [[nodiscard]] bool before(const LineEvent& x, const LineEvent& y) const { return line_.compare(x, y) == Sign::Negative; }
     [[nodiscard]] bool ends_at(const LineEvent& e) const {
         return segment_ && line_.compare(e, LineEvent::at(line_.b())) == Sign::Zero;
     }
+
+    // Every vertex on the line and every edge it crosses, in order along it:
+    // O(V + E) to find them, O(k log k) to sort the k kept. A segment keeps
+    // only those from a to b, the walk never looks further. Then the first
+    // thing ahead of any position is a binary search away, instead of a scan
+    // of the face's boundary that a walk re-entering a large face (the
+    // unbounded face of a star it crosses spoke after spoke) repeats each
+    // time.
+    void collect_stops() {
+        const LineEvent a = LineEvent::at(line_.a());
+        const LineEvent b = LineEvent::at(line_.b());
+        auto keep = [&](const LineEvent& e) { return !segment_ || (!before(e, a) && !before(b, e)); };
+        for (Index i = 0; i < d_.num_vertices(); ++i) {
+            const VertexId v(i);
+            const LineEvent e = LineEvent::at(point(v));
+            if (line_.side(point(v)) == Sign::Zero && keep(e)) stops_.push_back({e, v, {}});
+        }
+        for (Index i = 0; i < d_.num_half_edges(); i += 2) {
+            const HalfEdgeId h(i);
+            const Point c = point(d_.origin(h));
+            const Point dd = point(d_.target(h));
+            if (to_int(line_.side(c)) * to_int(line_.side(dd)) >= 0) continue;
+            const LineEvent e = LineEvent::cut(c, dd);
+            if (keep(e)) stops_.push_back({e, {}, edge_of(h)});
+        }
+        // Stops are at distinct points of the line: two edges crossing it at
+        // one point, or an edge crossing it at a vertex, would cross.
+        std::sort(stops_.begin(), stops_.end(), [&](const Stop& x, const Stop& y) { return before(x.event, y.event); });
+    }
+
     // The face entered when crossing edge e (ahead of the crossing).
     [[nodiscard]] FaceId face_ahead_of(EdgeId e) const {
         const HalfEdgeId h = half_edge_of(e, 0);
@@ -102,45 +140,24 @@ private:
         return State::in_face(face_ahead_of(e), crossing_of(e));
     }
 
-    // Inside face f just past `from`: the first thing ahead on f's cycles or
-    // among its isolated vertices, unless the segment ends first.
+    // Inside face f just past `from`: the next stop, which lies on f's
+    // boundary or is an isolated vertex in f (the open stretch up to it
+    // meets nothing, so it stays in f), unless the segment ends first.
     State in_face(FaceId f, const LineEvent& from) {
         out_.push_back(StabPiece::in_face(f));
-        std::optional<LineEvent> best;
-        VertexId best_vertex;
-        EdgeId best_edge;
-        auto consider = [&](const LineEvent& e, VertexId v, EdgeId k) {
-            if (line_.compare(from, e) != Sign::Negative) return;  // not ahead
-            if (best && line_.compare(e, *best) != Sign::Negative) return;
-            best = e;
-            best_vertex = v;
-            best_edge = k;
-        };
-        auto scan_cycle = [&](HalfEdgeId start) {
-            for (const HalfEdgeId h : d_.cycle(start)) {
-                const Point c = point(d_.origin(h));
-                const Point dd = point(d_.target(h));
-                const Sign sc = line_.side(c);
-                const Sign sd = line_.side(dd);
-                if (sc == Sign::Zero) consider(LineEvent::at(c), d_.origin(h), {});
-                if (to_int(sc) * to_int(sd) < 0) consider(LineEvent::cut(c, dd), {}, edge_of(h));
-            }
-        };
-        if (!d_.is_unbounded(f)) scan_cycle(d_.outer(f));
-        for (const HalfEdgeId h : d_.inner(f)) scan_cycle(h);
-        for (const VertexId v : d_.isolated(f)) {
-            if (line_.side(point(v)) == Sign::Zero) consider(LineEvent::at(point(v)), v, {});
-        }
-        if (segment_ && (!best || line_.compare(LineEvent::at(line_.b()), *best) == Sign::Negative)) {
+        const auto next = std::upper_bound(stops_.begin(), stops_.end(), from,
+                                           [&](const LineEvent& x, const Stop& y) { return before(x, y.event); });
+        if (segment_ && (next == stops_.end() || line_.compare(LineEvent::at(line_.b()), next->event) == Sign::Negative)) {
             return State::done();  // b lies inside f
         }
-        if (!best) return State::done();  // the line runs to infinity inside f
-        return best->crossing ? State::crossing(best_edge) : State::vertex_at(best_vertex, f);
+        if (next == stops_.end()) return State::done();  // the line runs to infinity inside f
+        return next->event.crossing ? State::crossing(next->edge) : State::vertex_at(next->vertex, f);
     }
 
     const Dcel& d_;
     DirectedLine line_;
     bool segment_;
+    std::vector<Stop> stops_;
     std::vector<StabPiece> out_;
 };
 

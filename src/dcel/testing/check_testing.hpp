@@ -1,17 +1,26 @@
 // Checking a C++ DCEL implementation against the reference inside its own
-// tests: GoogleTest assertions and a RapidCheck property over dcel::gen.
+// tests: GoogleTest assertions and RapidCheck properties over dcel::gen's
+// graphs (graph_cases.hpp).
 //
 // Header-only, so the core library needs neither GoogleTest nor RapidCheck.
 // Link the CMake target dcel::check_testing (the library and dcel::gen) and
-// your own GTest::gtest and rapidcheck.
+// your own GTest::gtest and rapidcheck; RC_GTEST_PROP needs
+// <rapidcheck/gtest.h> besides this header.
 //
 //   EXPECT_TRUE(dcel::check::agrees_with_reference(graph, my_faces(graph)));
 //   EXPECT_TRUE(dcel::check::faces_solver_agrees(my_faces));   // runs RapidCheck
 //   RC_GTEST_PROP(Mine, agrees, ()) { dcel::check::rc_assert_faces_agree(my_faces); }
 //
+// Strong by default: the graphs are targeted from the first case on
+// (near-degenerate coordinates, holes inside holes, isolated vertices, large
+// graphs; GraphCaseOptions::targeted), so RapidCheck's default 100 cases catch
+// a textbook atan2 solver, a counterclockwise next, a hole in the wrong face
+// and a solver that fails on isolated vertices on every seed tried
+// (properties/test_check_testing_seeds.cpp runs seeds 1 to 20).
+//
 // On failure the message holds the (shrunk) graph as one line of JSON, which
-// pastes into `dcel check - answer.json` or `dcel render -`, and the report,
-// first difference first.
+// pastes into `dcel check - answer.json` or `dcel render -`, the report, first
+// difference first, and the seed that replays the run.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -20,22 +29,33 @@
 #include <cstdint>
 #include <exception>
 #include <functional>
-#include <ostream>
+#include <optional>
+#include <sstream>
 #include <string>
-#include <vector>
 
 #include "dcel/build.hpp"
 #include "dcel/check/compare.hpp"
 #include "dcel/check/report.hpp"
 #include "dcel/dump.hpp"
 #include "dcel/error.hpp"
-#include "dcel/gen/generate.hpp"
 #include "dcel/io/graph_json.hpp"
+#include "dcel/testing/graph_cases.hpp"
 
 namespace dcel::check {
 
 using FacesSolver = std::function<FacesAnswer(const PlanarGraph&)>;
 using DumpSolver = std::function<DcelDump(const PlanarGraph&)>;
+
+// How faces_solver_agrees and dump_solver_agrees run RapidCheck. An unset
+// field takes RapidCheck's configuration (the RC_PARAMS environment
+// variable: seed=, max_success=, max_size=), and RapidCheck's defaults when
+// RC_PARAMS does not set it: a random seed, 100 cases, max_size 100.
+struct CheckOptions {
+    std::optional<std::uint64_t> seed = std::nullopt;
+    std::optional<int> cases = std::nullopt;     // successful cases needed to pass
+    std::optional<int> max_size = std::nullopt;  // the size of the last case (the graph size follows it)
+    GraphCaseOptions graphs = {.families = {}, .vertices_per_size = 3, .targeted = true};
+};
 
 namespace testing_detail {
 
@@ -56,45 +76,11 @@ template <class Answer, class Compare>
     }
 }
 
-// A graph drawn from dcel::gen: every family, size following RapidCheck's
-// size, shrinking only to smaller valid graphs (gen::shrink_candidates).
-struct GraphCase {
-    gen::Params params;
-    PlanarGraph graph;
-};
-
-inline void showValue(const GraphCase& c, std::ostream& os) {
-    os << "family " << gen::family_name(c.params.family) << ", seed " << c.params.seed << ": " << io::write_graph(c.graph);
-}
-
-inline rc::Gen<GraphCase> graphs() {
-    const auto all = gen::all_families();
-    const std::vector<gen::Family> families(all.begin(), all.end());
-    const rc::Gen<gen::Params> params = rc::gen::withSize([families](int size) {
-        return rc::gen::apply(
-            [](gen::Family f, std::uint64_t seed, int n) {
-                return gen::Params{f, seed, static_cast<std::size_t>(n)};
-            },
-            rc::gen::elementOf(families), rc::gen::arbitrary<std::uint64_t>(), rc::gen::inRange(0, size + 4));
-    });
-    return rc::gen::mapcat(rc::gen::noShrink(params), [](const gen::Params& p) {
-        return rc::Gen<GraphCase>([p](const rc::Random&, int) {
-            return rc::shrinkable::shrinkRecur(GraphCase{p, gen::generate(p)}, [](const GraphCase& c) {
-                return rc::seq::map(rc::seq::fromContainer(gen::shrink_candidates(c.graph)),
-                                    [params = c.params](PlanarGraph g) {
-                                        return GraphCase{params, std::move(g)};
-                                    });
-            });
-        });
-    });
-}
-
-// The property: the solver's answer for a generated graph agrees. `last`
-// keeps the message of the latest failure, which after shrinking is the
-// minimal one.
+// The property: the solver's answer for a generated graph agrees. A solver
+// that throws fails the case like a wrong answer.
 template <class Solver, class Compare>
-void rc_assert_agrees(const Solver& solver, Compare compare, std::string* last) {
-    const GraphCase c = *graphs();
+void rc_assert_agrees(const Solver& solver, Compare compare, const GraphCaseOptions& graphs) {
+    const GraphCase c = *graph_cases(graphs);
     const Dcel reference = build(c.graph);
     std::string failure;
     try {
@@ -103,19 +89,40 @@ void rc_assert_agrees(const Solver& solver, Compare compare, std::string* last) 
     } catch (const std::exception& e) {
         failure = "graph: " + io::write_graph(c.graph) + "the solver threw: " + e.what() + "\n";
     }
-    if (failure.empty()) return;
-    if (last != nullptr) *last = failure;
-    RC_FAIL(failure);
+    if (!failure.empty()) RC_FAIL(failure);
+}
+
+inline rc::detail::TestParams params(const CheckOptions& options) {
+    rc::detail::TestParams p = rc::detail::configuration().testParams;
+    if (options.seed) p.seed = *options.seed;
+    if (options.cases) p.maxSuccess = *options.cases;
+    if (options.max_size) p.maxSize = *options.max_size;
+    return p;
 }
 
 template <class Solver, class Compare>
-::testing::AssertionResult solver_agrees(const Solver& solver, Compare compare) {
-    std::string last;
-    if (rc::check("agrees with the reference DCEL on graphs from dcel::gen",
-                  [&] { rc_assert_agrees(solver, compare, &last); })) {
-        return ::testing::AssertionSuccess();
+::testing::AssertionResult solver_agrees(const Solver& solver, Compare compare, const CheckOptions& options) {
+    const rc::detail::TestParams p = params(options);
+    rc::detail::TestMetadata metadata;
+    metadata.id = metadata.description = "agrees with the reference DCEL on graphs from dcel::gen";
+    const rc::detail::TestResult result = rc::detail::checkProperty(
+        rc::detail::toProperty([&] { rc_assert_agrees(solver, compare, options.graphs); }), metadata, p);
+    if (result.template is<rc::detail::SuccessResult>()) return ::testing::AssertionSuccess();
+    std::ostringstream os;
+    if (result.template is<rc::detail::FailureResult>()) {
+        const auto& failure = result.template get<rc::detail::FailureResult>();
+        // RapidCheck's description starts with where RC_FAIL stands (this
+        // header), which tells the reader nothing.
+        const std::string& text = failure.description;
+        const std::size_t ours = text.find("graph: ");
+        os << "failed after " << failure.numSuccess << " agreeing cases; replay with CheckOptions{.seed = " << p.seed
+           << "} or RC_PARAMS=\"seed=" << p.seed << " max_success=" << p.maxSuccess << " max_size=" << p.maxSize
+           << "\"; smallest failing case found:\n"
+           << (ours == std::string::npos ? text : text.substr(ours));
+    } else {
+        rc::detail::printResultMessage(result, os);
     }
-    return ::testing::AssertionFailure() << "smallest failing case found:\n" << last;
+    return ::testing::AssertionFailure() << os.str();
 }
 
 inline Report faces(const Dcel& d, const FacesAnswer& a) { return compare_faces(d, a); }
@@ -131,22 +138,25 @@ inline Report dump(const Dcel& d, const DcelDump& a) { return compare_dump(d, a)
     return testing_detail::agrees(graph, answer, testing_detail::dump);
 }
 
-// Inside a RapidCheck property: draws one graph and fails with the first
-// difference (RC_FAIL), so RapidCheck shrinks the graph and prints it.
-inline void rc_assert_faces_agree(const FacesSolver& solver) {
-    testing_detail::rc_assert_agrees(solver, testing_detail::faces, nullptr);
+// Inside a RapidCheck property (RC_GTEST_PROP): draws one graph and fails
+// with the first difference (RC_FAIL), so RapidCheck shrinks the graph and
+// prints it. RC_PARAMS sets the seed and the number of cases.
+inline void rc_assert_faces_agree(const FacesSolver& solver, const GraphCaseOptions& graphs = CheckOptions{}.graphs) {
+    testing_detail::rc_assert_agrees(solver, testing_detail::faces, graphs);
 }
-inline void rc_assert_dump_agrees(const DumpSolver& solver) {
-    testing_detail::rc_assert_agrees(solver, testing_detail::dump, nullptr);
+inline void rc_assert_dump_agrees(const DumpSolver& solver, const GraphCaseOptions& graphs = CheckOptions{}.graphs) {
+    testing_detail::rc_assert_agrees(solver, testing_detail::dump, graphs);
 }
 
-// Runs the property with rc::check (RC_PARAMS applies: seed, max_success,
-// ...): success, or a failure holding the shrunk graph and its report.
-[[nodiscard]] inline ::testing::AssertionResult faces_solver_agrees(const FacesSolver& solver) {
-    return testing_detail::solver_agrees(solver, testing_detail::faces);
+// Runs the property itself: success, or a failure holding the shrunk graph,
+// its report and the seed.
+[[nodiscard]] inline ::testing::AssertionResult faces_solver_agrees(const FacesSolver& solver,
+                                                                    const CheckOptions& options = {}) {
+    return testing_detail::solver_agrees(solver, testing_detail::faces, options);
 }
-[[nodiscard]] inline ::testing::AssertionResult dump_solver_agrees(const DumpSolver& solver) {
-    return testing_detail::solver_agrees(solver, testing_detail::dump);
+[[nodiscard]] inline ::testing::AssertionResult dump_solver_agrees(const DumpSolver& solver,
+                                                                   const CheckOptions& options = {}) {
+    return testing_detail::solver_agrees(solver, testing_detail::dump, options);
 }
 
 }  // namespace dcel::check

@@ -1,0 +1,228 @@
+// Reading inputs under the size limit and writing outputs, with every
+// failure reported (cli_support.hpp).
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include "cli_support.hpp"
+#include "dcel/build.hpp"
+#include "dcel/io/graph_json.hpp"
+#include "status_line.hpp"
+
+namespace dcel::cli {
+namespace {
+
+std::uint64_t max_input = kDefaultMaxInputBytes;  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
+
+std::string os_reason(int err) { return std::strerror(err); }
+
+// "512 MiB" for a whole number of KiB/MiB/GiB, for the message.
+std::string in_units(std::uint64_t bytes) {
+    const char* units[] = {"KiB", "MiB", "GiB", "TiB"};
+    std::string best;
+    for (int k = 0; k < 4 && bytes != 0 && bytes % 1024 == 0; ++k) {
+        bytes /= 1024;
+        best = std::to_string(bytes) + " " + units[k];
+    }
+    return best.empty() ? "" : " (" + best + ")";
+}
+
+[[noreturn]] void throw_too_large(const std::string& name, std::uint64_t size, bool exact) {
+    const std::string limit = std::to_string(max_input) + " bytes" + in_units(max_input);
+    const std::string raise = "; raise it with dcel --max-input-bytes N";
+    if (exact) {
+        throw UsageError(name + " is " + std::to_string(size) + " bytes, over the input limit of " + limit + raise);
+    }
+    throw UsageError(name + " holds more than " + limit + ", the input limit" + raise);
+}
+
+class FileDescriptor {
+public:
+    explicit FileDescriptor(int fd, bool owned) : fd_(fd), owned_(owned) {}
+    FileDescriptor(const FileDescriptor&) = delete;
+    FileDescriptor& operator=(const FileDescriptor&) = delete;
+    ~FileDescriptor() {
+        if (owned_ && fd_ >= 0) ::close(fd_);
+    }
+    [[nodiscard]] int get() const { return fd_; }
+    // Closes it now and returns the OS's reason if that failed (written data
+    // may be reported lost only here, on some file systems), else 0.
+    int close() {
+        const int rc = owned_ && fd_ >= 0 ? ::close(fd_) : 0;
+        fd_ = -1;
+        return rc == 0 ? 0 : errno;
+    }
+
+private:
+    int fd_;
+    bool owned_;
+};
+
+// One read(), waiting when the descriptor is non-blocking (a stdin left
+// O_NONBLOCK by the shell's previous command); -1 with errno on failure.
+ssize_t read_some(int fd, char* buffer, std::size_t size) {
+    for (;;) {
+        const ssize_t n = ::read(fd, buffer, size);
+        if (n >= 0) return n;
+        if (errno == EINTR) continue;
+        if (errno != EAGAIN && errno != EWOULDBLOCK) return -1;
+        pollfd p{fd, POLLIN, 0};
+        (void)::poll(&p, 1, -1);
+    }
+}
+
+void write_all(int fd, std::string_view text, const std::string& name) {
+    while (!text.empty()) {
+        const ssize_t n = ::write(fd, text.data(), std::min<std::size_t>(text.size(), std::size_t{1} << 30));
+        if (n > 0) {
+            text.remove_prefix(static_cast<std::size_t>(n));
+            continue;
+        }
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            pollfd p{fd, POLLOUT, 0};
+            (void)::poll(&p, 1, -1);
+            continue;
+        }
+        throw UsageError("cannot write " + name + ": " + os_reason(n < 0 ? errno : EIO));
+    }
+}
+
+}  // namespace
+
+void set_max_input_bytes(std::uint64_t bytes) { max_input = bytes; }
+std::uint64_t max_input_bytes() { return max_input; }
+
+std::string read_input(const std::string& path) {
+    const std::string name = display_name(path);
+    int raw = 0;
+    if (path != "-") {
+        StatusLine::set("opening " + name);  // a FIFO waits here for its writer
+        do {
+            raw = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
+        } while (raw < 0 && errno == EINTR);
+        if (raw < 0) throw UsageError("cannot open " + name + ": " + os_reason(errno));
+    }
+    FileDescriptor fd(raw, path != "-");
+    struct stat st {};
+    if (::fstat(fd.get(), &st) != 0) throw UsageError("cannot read " + name + ": " + os_reason(errno));
+    if (S_ISDIR(st.st_mode)) throw UsageError("cannot read " + name + ": " + os_reason(EISDIR));
+    const bool regular = S_ISREG(st.st_mode);
+    if (regular && static_cast<std::uint64_t>(st.st_size) > max_input) {
+        throw_too_large(name, static_cast<std::uint64_t>(st.st_size), true);
+    }
+    StatusLine::set("reading " + name);
+    std::string text;
+    std::uint64_t total = 0;
+    auto fail_read = [&](int err) { throw UsageError("cannot read " + name + ": " + os_reason(err)); };
+    // A regular file: straight into a string of its size.
+    if (regular && st.st_size > 0) {
+        text.resize(static_cast<std::size_t>(st.st_size));
+        while (total < text.size()) {
+            const ssize_t n = read_some(fd.get(), text.data() + total, text.size() - total);
+            if (n < 0) fail_read(errno);
+            if (n == 0) break;
+            total += static_cast<std::uint64_t>(n);
+        }
+        text.resize(static_cast<std::size_t>(total));
+        if (total < static_cast<std::uint64_t>(st.st_size)) return text;  // shrank while read
+    }
+    // Anything else (or a file that grew): chunks of growing size, joined
+    // at the end, so that the peak is twice the input, not the three times
+    // of a doubling string's reallocation.
+    std::vector<std::unique_ptr<char[]>> chunks;
+    std::vector<std::size_t> sizes;
+    std::size_t chunk = std::size_t{64} << 10;
+    for (;;) {
+        auto buffer = std::make_unique<char[]>(chunk);  // NOLINT(cppcoreguidelines-avoid-c-arrays)
+        std::size_t filled = 0;
+        while (filled < chunk) {
+            const ssize_t n = read_some(fd.get(), buffer.get() + filled, chunk - filled);
+            if (n < 0) fail_read(errno);
+            if (n == 0) break;
+            filled += static_cast<std::size_t>(n);
+            total += static_cast<std::uint64_t>(n);
+            if (total > max_input) throw_too_large(name, total, false);
+            StatusLine::progress(total);
+        }
+        if (filled == 0) break;
+        chunks.push_back(std::move(buffer));
+        sizes.push_back(filled);
+        if (filled < chunk) break;
+        chunk = std::min(chunk * 2, std::size_t{64} << 20);
+    }
+    text.reserve(static_cast<std::size_t>(total));
+    for (std::size_t i = 0; i < chunks.size(); ++i) {
+        text.append(chunks[i].get(), sizes[i]);
+        chunks[i].reset();
+    }
+    return text;
+}
+
+void require_one_stdin(std::initializer_list<std::pair<std::string_view, const std::string*>> inputs) {
+    std::string_view first;
+    for (const auto& [what, path] : inputs) {
+        if (path == nullptr || *path != "-") continue;
+        if (first.empty()) {
+            first = what;
+        } else {
+            throw UsageError(std::string(first) + " and " + std::string(what) +
+                             " cannot both be - (stdin): give one of them as a file");
+        }
+    }
+}
+
+PlanarGraph load_graph(const std::string& path) {
+    const std::string text = read_input(path);
+    StatusLine::set("parsing " + display_name(path));
+    return with_source(path, [&] { return io::read_graph(text); });
+}
+
+Dcel build_dcel(const std::string& path, const PlanarGraph& g) {
+    StatusLine::set("building the DCEL (" + std::to_string(g.vertices.size()) + " vertices, " +
+                    std::to_string(g.edges.size()) + " edges)");
+    return with_source(path, [&] { return build(g); });
+}
+
+void write_stdout(std::string_view text) {
+    if (const std::string reason = flush_stdout(); !reason.empty()) {
+        throw UsageError("cannot write to stdout: " + reason);
+    }
+    if (::isatty(STDOUT_FILENO) != 0) {
+        StatusLine::stop();  // the output goes to the terminal the status line is on
+    } else {
+        StatusLine::set("writing the output");
+    }
+    write_all(STDOUT_FILENO, text, "to stdout");
+}
+
+void write_file(const std::string& path, std::string_view text) {
+    const std::string name = display_name(path);
+    int raw = -1;
+    do {
+        raw = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOCTTY, 0666);
+    } while (raw < 0 && errno == EINTR);
+    if (raw < 0) throw UsageError("cannot open " + name + " for writing: " + os_reason(errno));
+    FileDescriptor fd(raw, true);
+    write_all(fd.get(), text, name);
+    if (const int err = fd.close(); err != 0) throw UsageError("cannot write " + name + ": " + os_reason(err));
+}
+
+std::string flush_stdout() {
+    errno = 0;
+    std::cout.flush();  // into stdout's buffer, or through it (synced with stdio)
+    int err = errno;
+    if (std::fflush(stdout) != 0 && err == 0) err = errno;
+    if (std::ferror(stdout) != 0 || !std::cout) return os_reason(err != 0 ? err : EIO);
+    return {};
+}
+
+}  // namespace dcel::cli

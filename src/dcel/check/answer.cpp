@@ -1,0 +1,212 @@
+// compare(): an answer of any kind against the reference, under the
+// conventions, with notes on what was assumed and on conventions that would
+// make the answer agree.
+#include "dcel/check/answer.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "dcel/check/collector.hpp"
+#include "dcel/check/cycles.hpp"
+#include "dcel/io/dcel_json.hpp"
+#include "dcel/io/json_writer.hpp"
+
+namespace dcel::check {
+
+namespace {
+
+// Faces: a repeated first vertex dropped, 1-based ids shifted, cycles
+// reversed for faces on the right; then matched like compare_faces.
+bool needs_rewriting(const CycleList& answer, const Conventions& c) {
+    if (c.one_based || c.face_on_right) return true;
+    for (std::size_t i = 0; i < answer.size(); ++i) {
+        const std::span<const Index> cycle = answer[i];
+        if (cycle.size() >= 2 && cycle.front() == cycle.back()) return true;
+    }
+    return false;
+}
+
+Report compare_cycles(const Dcel& reference, const CycleList& answer, const Conventions& c) {
+    detail::Collector out;
+    if (!needs_rewriting(answer, c)) {
+        // As given: no copy (an answer may hold millions of cycles).
+        const detail::Reference ref(reference);
+        (void)detail::match_cycles(ref, detail::AnswerCycles{&answer, {}}, out);
+        return std::move(out).finish();
+    }
+    CycleList list;
+    std::vector<std::size_t> numbering;
+    std::size_t closed = 0;
+    for (std::size_t i = 0; i < answer.size(); ++i) {
+        const std::span<const Index> given = answer[i];
+        std::vector<Index> vs(given.begin(), given.end());
+        if (c.one_based && std::find(vs.begin(), vs.end(), Index{0}) != vs.end()) {
+            if (out.wants(DifferenceKind::VertexCount)) {
+                out.add(DifferenceKind::VertexCount, "answer cycle " + std::to_string(i) + " " + detail::cycle_text(vs) +
+                                                         " names vertex 0, but with --one-based ids count from 1");
+            }
+            continue;
+        }
+        if (c.one_based) {
+            for (Index& v : vs) --v;
+        }
+        if (vs.size() >= 2 && vs.front() == vs.back()) {  // open, a cycle never steps from a vertex to itself
+            vs.pop_back();
+            ++closed;
+        }
+        if (c.face_on_right && !vs.empty()) std::reverse(vs.begin() + 1, vs.end());
+        list.ids.insert(list.ids.end(), vs.begin(), vs.end());
+        list.end_cycle();
+        numbering.push_back(i);
+    }
+    const detail::Reference ref(reference);
+    detail::AnswerCycles labels{&list, {}, &numbering};
+    (void)detail::match_cycles(ref, labels, out);
+    Report report = std::move(out).finish();
+    if (closed != 0) {
+        report.notes.push_back(std::to_string(closed) + (closed == 1 ? " cycle repeats its" : " cycles repeat their") +
+                               " first vertex at the end: read as closed");
+    }
+    if (c.one_based) report.notes.push_back("ids read as counting from 1 (--one-based); messages count from 0");
+    if (c.face_on_right) {
+        report.notes.push_back("cycles read with faces on the right (--face-on right); messages show them reversed");
+    }
+    return report;
+}
+
+// A dump under the conventions, rewritten into the reference's: ids from 0
+// (a 0 in a 1-based dump is its null), faces on the left.
+DcelDump normalised(const DcelDump& in, const Conventions& c) {
+    DcelDump d = in;
+    if (c.one_based) {
+        auto shift = [](auto& id) {
+            using Id = std::decay_t<decltype(id)>;
+            id = id.is_null() || id.index() == 0 ? Id() : Id(id.index() - 1);
+        };
+        for (HalfEdgeId& h : d.vertex_out) shift(h);
+        for (HalfEdgeRecord& r : d.half_edges) {
+            shift(r.origin);
+            shift(r.twin);
+            shift(r.next);
+            shift(r.prev);
+            shift(r.face);
+        }
+        for (FaceDump& f : d.faces) {
+            shift(f.outer);
+            for (HalfEdgeId& h : f.inner) shift(h);
+            for (VertexId& v : f.isolated) shift(v);
+        }
+    }
+    if (c.face_on_right) {
+        // Each half-edge turned around: it starts where its twin starts, and
+        // the cycles run backwards (next and prev swap); every face keeps its
+        // half-edges. Left as is where a twin is out of range (validation
+        // reports that).
+        const std::size_t n = d.half_edges.size();
+        auto twin_of = [&](HalfEdgeId h) { return h.index() < n ? d.half_edges[h.index()].twin : HalfEdgeId(); };
+        std::vector<HalfEdgeRecord> turned = d.half_edges;
+        for (std::size_t h = 0; h < n; ++h) {
+            const HalfEdgeId t = d.half_edges[h].twin;
+            if (t.index() < n) turned[h].origin = d.half_edges[t.index()].origin;
+            std::swap(turned[h].next, turned[h].prev);
+        }
+        d.half_edges = std::move(turned);
+        for (HalfEdgeId& h : d.vertex_out) {
+            if (const HalfEdgeId t = twin_of(h); !t.is_null()) h = t;
+        }
+    }
+    return d;
+}
+
+Report compare_under(const Dcel& reference, const Answer& a, const Conventions& c) {
+    switch (a.kind) {
+        case AnswerKind::Faces: return compare_cycles(reference, a.cycles, c);
+        case AnswerKind::Dump: {
+            Report r = compare_dump(reference, c.one_based || c.face_on_right ? normalised(a.dump, c) : a.dump);
+            if (c.one_based) r.notes.push_back("ids read as counting from 1 (--one-based); messages count from 0");
+            if (c.face_on_right) r.notes.push_back("half-edges read with faces on the right (--face-on right)");
+            return r;
+        }
+        case AnswerKind::Polygons: return compare_polygons(reference, a.regions, c);
+        case AnswerKind::Rings: return compare_rings(reference, a.regions, c);
+    }
+    return {};
+}
+
+}  // namespace
+
+std::optional<std::string> convention_hint(const Dcel& reference, const Answer& a, const Conventions& c) {
+    struct Toggle {
+        bool applies;
+        Conventions conventions;
+        const char* note;
+    };
+    Conventions right = c, based = c, loose = c;
+    right.face_on_right = !c.face_on_right;
+    based.one_based = !c.one_based;
+    loose.unoriented = true;
+    const bool ids = a.kind != AnswerKind::Polygons && a.kind != AnswerKind::Rings ? true : !a.regions.by_points;
+    const Toggle toggles[] = {
+        {a.kind != AnswerKind::Rings, right,
+         c.face_on_right ? "the answer agrees without --face-on right: it keeps faces on the left"
+                         : "the answer agrees with --face-on right: it keeps each face on the right of its half-edges"},
+        {ids, based,
+         c.one_based ? "the answer agrees without --one-based: its ids count from 0"
+                     : "the answer agrees with --one-based: its ids count from 1"},
+        {a.kind == AnswerKind::Polygons && !c.unoriented, loose,
+         "the answer agrees with --unoriented: its rings run either way, which GeoJSON allows readers to accept"},
+    };
+    for (const Toggle& t : toggles) {
+        if (t.applies && compare_under(reference, a, t.conventions).agrees()) return std::string(t.note);
+    }
+    return std::nullopt;
+}
+
+std::string reference_answer(const Dcel& reference, AnswerKind kind) {
+    switch (kind) {
+        case AnswerKind::Faces: return io::write_faces_of(reference);
+        case AnswerKind::Dump: return io::write_dump(to_dump(reference), io::DumpStyle::Compact);
+        case AnswerKind::Polygons:
+        case AnswerKind::Rings: break;
+    }
+    const bool rings = kind == AnswerKind::Rings;
+    std::string out;
+    io::JsonWriter w(out);
+    w.raw(rings ? "{\"rings\": [" : "{\"polygons\": [");
+    const auto regions = reference_regions(reference, kind);
+    for (std::size_t p = 0; p < regions.size(); ++p) {
+        if (p != 0) w.raw(", ");
+        if (!rings) w.raw("[");
+        for (std::size_t r = 0; r < regions[p].size(); ++r) {
+            if (rings && r != 0) break;  // one ring per face
+            if (r != 0) w.raw(", ");
+            w.raw("[");
+            for (std::size_t i = 0; i < regions[p][r].size(); ++i) {
+                if (i != 0) w.raw(", ");
+                w.index(regions[p][r][i]);
+            }
+            w.raw("]");
+        }
+        if (!rings) w.raw("]");
+    }
+    w.raw("]}\n");
+    w.flush();
+    return out;
+}
+
+Report compare(const Dcel& reference, const Answer& answer, const Conventions& conventions) {
+    Report report = compare_under(reference, answer, conventions);
+    if (!report.agrees()) {
+        if (std::optional<std::string> hint = convention_hint(reference, answer, conventions)) {
+            report.notes.push_back(std::move(*hint));
+        }
+    }
+    // A kind named by the answer's own key needs no note; a shape does.
+    if (!answer.detected_from.empty() && answer.detected_from.rfind("an object with", 0) != 0) {
+        report.notes.insert(report.notes.begin(), "answer kind " + std::string(answer_kind_name(answer.kind)) +
+                                                      ", detected from " + answer.detected_from);
+    }
+    return report;
+}
+
+}  // namespace dcel::check

@@ -1,0 +1,28 @@
+"""Shared by the test impls that answer in other kinds than faces: the
+reference's answer of that kind, from the dcel CLI itself (DCEL_CLI names it),
+so that each impl states only its one misbehaviour on top of a right answer."""
+import json
+import os
+import subprocess
+
+
+def answer(text, kind):
+    """The reference's answer of `kind` (faces, dump, polygons, rings), parsed."""
+    out = subprocess.run([os.environ["DCEL_CLI"], "faces", "--answer", kind, "-"], input=text.encode(),
+                         stdout=subprocess.PIPE, check=True).stdout
+    return json.loads(out)
+
+
+def dump(text):
+    return answer(text, "dump")
+
+
+def walk(dump_doc, start):
+    """The origins along next from half-edge `start`, round once."""
+    half = dump_doc["half_edges"]
+    ring, h = [], start
+    while True:
+        ring.append(half[h]["origin"])
+        h = half[h]["next"]
+        if h == start:
+            return ring
