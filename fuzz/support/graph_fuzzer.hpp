@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -45,11 +46,22 @@ inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
     return {reinterpret_cast<const char*>(data), size};
 }
 
+// DCEL_FUZZ_BYTE_MUTATIONS=1 in the environment turns the structural
+// mutations off (libFuzzer's own only), to measure what they bring on the
+// same binary.
+inline bool byte_mutations_only() {
+    static const bool only = [] {
+        const char* v = std::getenv("DCEL_FUZZ_BYTE_MUTATIONS");
+        return v != nullptr && std::string_view(v) == "1";
+    }();
+    return only;
+}
+
 // The body of LLVMFuzzerCustomMutator: one to four structural mutations.
 inline std::size_t mutate_input(const GraphFuzzing& f, std::uint8_t* data, std::size_t size, std::size_t max_size,
                                 unsigned int seed) {
     gen::Rng rng(seed);
-    if (!rng.chance(1, 8)) {
+    if (!byte_mutations_only() && !rng.chance(1, 8)) {
         if (std::optional<PlanarGraph> g = f.decode(as_text(data, size))) {
             bool changed = false;
             for (std::uint64_t n = 1 + rng.below(4); n > 0; --n)
@@ -67,6 +79,7 @@ inline std::size_t mutate_input(const GraphFuzzing& f, std::uint8_t* data, std::
 inline std::size_t cross_over_inputs(const GraphFuzzing& f, const std::uint8_t* data1, std::size_t size1,
                                      const std::uint8_t* data2, std::size_t size2, std::uint8_t* out, std::size_t max_out,
                                      unsigned int seed) {
+    if (byte_mutations_only()) return 0;
     gen::Rng rng(seed);
     std::optional<PlanarGraph> a = f.decode(as_text(data1, size1));
     const std::optional<PlanarGraph> b = f.decode(as_text(data2, size2));

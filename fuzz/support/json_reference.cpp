@@ -5,11 +5,43 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <string>
+#include <string_view>
 
 namespace dcel::fuzz {
 namespace {
 
 using Json = nlohmann::json;
+
+// Is a JSON number literal, exactly, an integer? Its value is the digits
+// (integer and fraction parts, trailing zeros dropped) times ten to the
+// exponent less the fraction's length plus the zeros dropped.
+bool literal_is_integer(std::string_view s) {
+    std::size_t i = s.empty() || s[0] != '-' ? 0 : 1;
+    std::string digits;
+    std::size_t fraction = 0;
+    bool in_fraction = false;
+    for (; i < s.size() && s[i] != 'e' && s[i] != 'E'; ++i) {
+        if (s[i] == '.') {
+            in_fraction = true;
+            continue;
+        }
+        digits += s[i];
+        fraction += in_fraction ? 1 : 0;
+    }
+    long long exponent = 0;  // clamped: far beyond any digit count
+    if (i < s.size()) {
+        ++i;
+        const bool negative = i < s.size() && s[i] == '-';
+        if (i < s.size() && (s[i] == '-' || s[i] == '+')) ++i;
+        for (; i < s.size(); ++i) exponent = std::min(exponent * 10 + (s[i] - '0'), 1000000000LL);
+        if (negative) exponent = -exponent;
+    }
+    const std::size_t last = digits.find_last_not_of('0');
+    if (last == std::string::npos) return true;  // zero
+    const auto zeros = static_cast<long long>(digits.size() - 1 - last);
+    return exponent - static_cast<long long>(fraction) + zeros >= 0;
+}
 
 // A SAX handler for nlohmann::json::sax_parse that builds nothing: it
 // records the nesting depth and the keys of a top-level object, so that
@@ -21,7 +53,10 @@ public:
     bool boolean(bool) { return true; }
     bool number_integer(Json::number_integer_t) { return true; }
     bool number_unsigned(Json::number_unsigned_t) { return true; }
-    bool number_float(Json::number_float_t, const Json::string_t&) { return true; }
+    bool number_float(Json::number_float_t v, const Json::string_t& literal) {
+        if (std::floor(v) == v && !literal_is_integer(literal)) facts_.rounded_to_integer = true;
+        return true;
+    }
     bool string(Json::string_t&) { return true; }
     template <class Binary>
     bool binary(Binary&) {  // a template: older nlohmann versions have no binary type

@@ -20,6 +20,9 @@ struct JsonFacts {
                                                   // then nothing else is filled in (RFC 8259 allows none)
     bool accepted = false;                        // one JSON value (RFC 8259), as nlohmann reads it
     bool number_overflow = false;                 // refused for a number beyond the range of a double
+    bool rounded_to_integer = false;              // a number that is no integer but reads as one (5e-3241,
+                                                  // 1.00000000000000001): nlohmann's double cannot tell
+                                                  // an index the reader must refuse
     std::size_t depth = 0;                        // the deepest nesting of arrays and objects
     std::vector<std::string> duplicate_top_keys;  // keys given twice in a top-level object
     std::string error;                            // nlohmann's message when refused

@@ -1,5 +1,8 @@
 // Union-find over vertex ids: the oracles' own count of connected
-// components (isolated vertices included), independent of build().
+// components (isolated vertices included), independent of build(). The
+// generators' Kruskal forest (src/dcel/gen/family_random.cpp) stays a
+// separate copy on purpose: this one checks what that one builds (a tree
+// family's edges + components == vertices).
 #pragma once
 
 #include <cstddef>
