@@ -125,28 +125,34 @@ std::optional<Index> index_or_null(const Json& v) { return v.is_null() ? std::op
 // [a, b]: exactly two elements.
 bool is_pair(const Json& v) { return v.is_array() && v.size() == 2; }
 
-std::optional<std::vector<Point>> points(const Json& v) {
+// [[a, b], ...], each pair made into a T by make (nothing when one is not).
+template <class T, class Make>
+std::optional<std::vector<T>> pairs(const Json& v, Make make) {
     if (!v.is_array()) return std::nullopt;
-    std::vector<Point> out;
+    std::vector<T> out;
     for (const Json& p : v) {
         if (!is_pair(p)) return std::nullopt;
-        const auto x = coordinate(p[0]), y = coordinate(p[1]);
-        if (!x || !y) return std::nullopt;
-        out.push_back({*x, *y});
+        const std::optional<T> t = make(p[0], p[1]);
+        if (!t) return std::nullopt;
+        out.push_back(*t);
     }
     return out;
 }
 
+std::optional<std::vector<Point>> points(const Json& v) {
+    return pairs<Point>(v, [](const Json& a, const Json& b) -> std::optional<Point> {
+        const auto x = coordinate(a), y = coordinate(b);
+        if (!x || !y) return std::nullopt;
+        return Point{*x, *y};
+    });
+}
+
 std::optional<std::vector<GraphEdge>> edges(const Json& v) {
-    if (!v.is_array()) return std::nullopt;
-    std::vector<GraphEdge> out;
-    for (const Json& e : v) {
-        if (!is_pair(e)) return std::nullopt;
-        const auto a = index(e[0]), b = index(e[1]);
-        if (!a || !b) return std::nullopt;
-        out.push_back({VertexId(*a), VertexId(*b)});
-    }
-    return out;
+    return pairs<GraphEdge>(v, [](const Json& a, const Json& b) -> std::optional<GraphEdge> {
+        const auto u = index(a), w = index(b);
+        if (!u || !w) return std::nullopt;
+        return GraphEdge{VertexId(*u), VertexId(*w)};
+    });
 }
 
 std::optional<std::vector<std::vector<Index>>> cycles(const Json& v) {
