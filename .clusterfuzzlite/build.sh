@@ -3,7 +3,8 @@
 # $CXX, $CFLAGS and $CXXFLAGS (which carry the sanitizer and coverage flags of
 # the build being made), links it with $LIB_FUZZING_ENGINE, and puts into $OUT
 # each <name>_fuzzer with <name>_fuzzer_seed_corpus.zip (corpus/<name>/,
-# regressions included) and <name>_fuzzer.dict (fuzz/<name>.dict).
+# regressions and grown/ included), <name>_fuzzer.dict (fuzz/<name>.dict) and
+# <name>_fuzzer.options (fuzz/<name>.options).
 # Runs in the repository root (the Dockerfile's WORKDIR) unless DCEL_SRC says
 # otherwise; builds in $WORK.
 # Outside the image (docs/fuzzing.md), $OUT may not exist yet: it is made.
@@ -25,7 +26,8 @@ for bin in "$build"/bin/*_fuzzer; do
   name=${target%_fuzzer}
   cp "$bin" "$OUT/"
   rm -f "$OUT/${target}_seed_corpus.zip"
-  # Seeds and regressions; not grown/, a local campaign's uncommitted corpus.
-  (cd "$src/corpus/$name" && find . -path ./grown -prune -o -type f -print | zip -q -j "$OUT/${target}_seed_corpus.zip" -@)
+  # Seeds, regressions and the committed minimised corpus (grown/).
+  (cd "$src/corpus/$name" && find . -type f -print | zip -q -j "$OUT/${target}_seed_corpus.zip" -@)
   if [ -f "$src/fuzz/$name.dict" ]; then cp "$src/fuzz/$name.dict" "$OUT/$target.dict"; fi
+  if [ -f "$src/fuzz/$name.options" ]; then cp "$src/fuzz/$name.options" "$OUT/$target.options"; fi
 done

@@ -31,16 +31,20 @@
 #include "dcel/error.hpp"
 #include "dcel/io/dcel_json.hpp"
 #include "dcel/validate.hpp"
+#include "oracles/dump_judge.hpp"
 #include "support/dump_edits.hpp"
 #include "support/fuzz_check.hpp"
-#include "support/reference_dcel.hpp"
 #include "support/text_graph.hpp"
 
 namespace dcel::fuzz {
 namespace {
 
-// The judge is O(V^2 + E^2) big-integer work; small graphs and a few
-// commands keep a run near a millisecond, and every corruption is local.
+using oracle::judge_dump;
+using oracle::Judgement;
+
+// The judge checks all pairs of the dump's graph (O(V E + E^2) exact
+// orientations); small graphs and a few commands keep a run well under a
+// millisecond, and every corruption is local.
 constexpr std::size_t kMaxInput = 4096;
 constexpr GraphCaps kCaps{16, 24};
 constexpr std::size_t kMaxCommands = 8;

@@ -19,7 +19,11 @@
 // flags. x and y are small grid coordinates (-1 .. 7); flags bits 0-1 give
 // `at` (the new point at a vertex or an edge's middle), and bit 2 says 16
 // raw bytes follow: the point as two doubles (non-finite ones become 0), so
-// exactness is fuzzed too.
+// exactness is fuzzed too (support/edit_input.hpp). The custom mutator
+// (support/edit_mutator.hpp) inserts, deletes, copies, swaps and changes
+// whole steps, and gives new steps raw points a few ulps from the start
+// map's vertices or within rounding of the line through two of them.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -27,8 +31,9 @@
 #include <string>
 
 #include "dcel/dump.hpp"
-#include "dcel/gen/generate.hpp"
+#include "support/edit_input.hpp"
 #include "support/edit_model.hpp"
+#include "support/edit_mutator.hpp"
 #include "support/edit_oracle.hpp"
 #include "support/fuzz_check.hpp"
 #include "support/rebuild_compare.hpp"
@@ -43,54 +48,6 @@ using testing::Step;
 // second. 4 KB holds 64 steps even when every one carries raw doubles.
 constexpr std::size_t kMaxInput = 4096;
 constexpr int kMaxSteps = 64;
-constexpr std::size_t kMaxGeneratedVertices = 24;
-
-// Hands out bytes, then zeros once the input is used up (empty() says so).
-class Bytes {
-public:
-    Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-    [[nodiscard]] bool empty() const { return at_ >= size_; }
-    std::uint8_t byte() { return at_ < size_ ? data_[at_++] : 0; }
-    double number() {
-        double v = 0;
-        std::uint8_t raw[8] = {};
-        for (std::uint8_t& b : raw) b = byte();
-        std::memcpy(&v, raw, sizeof v);
-        return std::isfinite(v) ? v : 0.0;
-    }
-
-private:
-    const std::uint8_t* data_;
-    std::size_t size_;
-    std::size_t at_ = 0;
-};
-
-PlanarGraph start_graph(Bytes& in) {
-    const int which = in.byte() % 8;
-    if (which < 3) return testing::start_map(which);
-    const auto families = gen::all_families();
-    gen::Params p;
-    p.family = families[in.byte() % families.size()];
-    p.seed = in.byte();
-    p.vertices = in.byte() % (kMaxGeneratedVertices + 1);
-    return gen::generate(p);
-}
-
-Step read_step(Bytes& in) {
-    Step s;
-    s.op = static_cast<testing::Op>(in.byte() % 7);
-    s.a = in.byte();
-    s.b = in.byte();
-    s.x = in.byte() % 9 - 1;
-    s.y = in.byte() % 9 - 1;
-    const std::uint8_t flags = in.byte();
-    s.at = flags % 3;
-    if ((flags & 4U) != 0) {
-        s.raw = true;
-        s.exact = {in.number(), in.number()};
-    }
-    return s;
-}
 
 // One step: the verdict against the oracle, then the state against the
 // model. `model` is the graph the DCEL must hold, updated on success.
@@ -148,4 +105,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto difference = testing::difference_between(d, build(model));
     FUZZ_CHECK(!difference, "after all steps, the DCEL differs from build() of the model's graph: " << *difference);
     return 0;
+}
+
+extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
+                                               unsigned int seed) {
+    return dcel::fuzz::mutate_edit_input(data, size, std::min(max_size, dcel::fuzz::kMaxInput), seed);
+}
+
+extern "C" std::size_t LLVMFuzzerCustomCrossOver(const std::uint8_t* data1, std::size_t size1, const std::uint8_t* data2,
+                                                 std::size_t size2, std::uint8_t* out, std::size_t max_out,
+                                                 unsigned int seed) {
+    return dcel::fuzz::cross_over_edit_inputs(data1, size1, data2, size2, out, std::min(max_out, dcel::fuzz::kMaxInput),
+                                              seed);
 }

@@ -9,43 +9,54 @@
 // with Boost's Boyer-Myrvold test: a graph Boost calls non-planar must be
 // rejected. build() without the crossing check must terminate without
 // memory errors on any input, and equal the checked build on a valid one.
+// The generators' own guard (gen::find_problem, which keeps every generated
+// graph valid) must find a problem exactly when brute force does.
 //
 // Input: readable text, see support/text_graph.hpp, e.g.
 //   points 0 0, 4 4, 0 4, 4 0  edges 0 1, 2 3
+// The custom mutator (support/graph_mutator.hpp) moves vertices onto or
+// within ulps of lines and other vertices, adds and removes edges and
+// vertices, and plants crossings, touches, overlaps and duplicates.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "dcel/build.hpp"
 #include "dcel/dump.hpp"
 #include "dcel/error.hpp"
+#include "dcel/gen/brute_force.hpp"
 #include "dcel/validate.hpp"
-#include "support/boyer_myrvold.hpp"
-#include "support/brute_force.hpp"
+#include "oracles/boost_oracle.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/dump_judge.hpp"
 #include "support/fuzz_check.hpp"
-#include "support/reference_dcel.hpp"
+#include "support/graph_fuzzer.hpp"
 #include "support/text_graph.hpp"
 
 namespace dcel::fuzz {
 namespace {
 
-// The brute force is O(V^2 + V*E + E^2) big-integer operations and the
-// reference DCEL similar; these caps keep a run around a millisecond. Enough
-// for K5 and K3,3 (Boost) and for every local configuration of a few edges.
-constexpr std::size_t kMaxInput = 4096;
-constexpr GraphCaps kCaps{24, 40};
+// The brute force compares all pairs (O(V E + E^2) exact orientations) and
+// the reference DCEL sorts and walks; these caps keep a run near a
+// millisecond under the sanitizers. Enough for K5 and K3,3 (Boost) and for
+// every local configuration of a few edges.
+constexpr std::size_t kMaxInput = 16 * 1024;
+constexpr GraphCaps kCaps{48, 96};
 
-std::vector<std::pair<Index, Index>> index_pairs(const PlanarGraph& g) {
-    std::vector<std::pair<Index, Index>> pairs;
-    for (const GraphEdge& e : g.edges) pairs.emplace_back(e.u.index(), e.v.index());
-    return pairs;
-}
+using oracle::Defect;
+using oracle::describe;
 
 void check_graph(const PlanarGraph& g) {
-    const Defects defects = find_defects(g);
+    const oracle::DefectKinds defects = oracle::find_defects(g, oracle::PairSearch::AllPairs).kinds();
+    const std::optional<std::string> problem = gen::find_problem(g);
+    FUZZ_CHECK(problem.has_value() == defects.any(),
+               "the generators' guard says " << problem.value_or("valid") << ", brute force finds " << describe(defects));
+    const bool planar = oracle::boyer_myrvold(g).planar;
     // The oracles check each other: a graph that is not planar at all has
     // no drawing without a geometric defect among its edges.
-    if (!boost_is_planar(g.vertices.size(), index_pairs(g))) {
+    if (!planar) {
         FUZZ_CHECK(has(defects, Defect::Crossing) || has(defects, Defect::Touch) || has(defects, Defect::Overlap) ||
                        has(defects, Defect::DuplicatePoint) || has(defects, Defect::BadCoordinate),
                    "Boost calls the graph non-planar, brute force finds only " << describe(defects));
@@ -54,7 +65,7 @@ void check_graph(const PlanarGraph& g) {
     try {
         d = build(g);
     } catch (const InvalidInput& e) {
-        const Defect k = defect_of(e.kind());
+        const Defect k = oracle::defect_of(e.kind());
         FUZZ_CHECK(defects.any(), "build rejects a graph brute force finds valid: " << e.what());
         FUZZ_CHECK(k != Defect::Count && has(defects, k), "build reports " << to_string(e.kind())
                                                                            << " but brute force finds " << describe(defects)
@@ -62,11 +73,11 @@ void check_graph(const PlanarGraph& g) {
         return;
     }
     FUZZ_CHECK(defects.none(), "build accepts a graph with " << describe(defects));
-    FUZZ_CHECK(boost_is_planar(g.vertices.size(), index_pairs(g)), "build accepts a graph Boost calls non-planar");
+    FUZZ_CHECK(planar, "build accepts a graph Boost calls non-planar");
     const CheckResult v = validate(d);
     FUZZ_CHECK(!v, "validate rejects a built DCEL: [" << to_string(v->invariant) << "] " << v->message);
     const DcelDump dump = to_dump(d);
-    const Judgement j = judge_dump(dump);
+    const oracle::Judgement j = oracle::judge_dump(dump);
     FUZZ_CHECK(j.valid, "the reference disagrees with build: " << j.reason);
 
     const DcelDump unchecked = to_dump(build(g, BuildOptions{.check_crossings = false}));
@@ -85,6 +96,13 @@ void check_unchecked_build(const PlanarGraph& g) {
     }
 }
 
+std::optional<PlanarGraph> any_graph(std::string_view text) {
+    TokenReader in(text);
+    return decode_graph(in, kCaps);
+}
+
+constexpr GraphFuzzing kFuzzing{any_graph, Validity::Break, {kCaps.vertices, kCaps.edges}};
+
 }  // namespace
 }  // namespace dcel::fuzz
 
@@ -96,3 +114,5 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     dcel::fuzz::check_unchecked_build(g);
     return 0;
 }
+
+DCEL_GRAPH_FUZZER_HOOKS(dcel::fuzz::kFuzzing)

@@ -1,78 +1,115 @@
-// oracle: valid graphs of every generator family through build(), compared
-// with Boost and with exact rational arithmetic.
+// oracle: valid graphs through build(), compared with Boost, the reference
+// DCEL and the exact oracles (tests/oracles/, none of which uses
+// src/dcel/geometry).
 //
-// Compares the DCEL's boundary cycles with the faces of Boost's
-// planar_face_traversal over a rotation system sorted by the oracles' own
-// exact comparator (tests/support/boost_oracle.hpp: it never uses
-// src/dcel/geometry). Boost skips isolated vertices and reports each
-// component's outer walk as a face of its own, which is exactly a hole
-// cycle, so cycles are compared, not faces. Also: Boyer-Myrvold calls the
-// graph planar and its embedding has as many faces as the DCEL has cycles;
-// V - E + F = 1 + C with C by union-find; validate() passes; the generated
-// graph is valid by brute force (exact, all pairs). The queries are checked
-// against the same oracles: boundary_cycles(), count_components(),
-// faces_around() against the exact angular order, neighbours() against a
-// scan of all half-edges, cycle_area() signs and face_area() values against
-// rational areas (face_area promises the exact area rounded once).
+// Compares the DCEL's faces with the reference DCEL's (every cycle, every
+// hole and isolated vertex in its face), and its boundary cycles with the
+// faces of Boost's planar_face_traversal over a rotation system sorted by
+// the oracles' own exact comparator (Boost skips isolated vertices and
+// reports each component's outer walk as a face of its own, which is
+// exactly a hole cycle, so cycles are compared, not faces). Also: on small
+// graphs, Boyer-Myrvold calls the graph planar and its embedding has as
+// many faces as the DCEL has cycles; V - E + F = 1 + C with C by
+// union-find; validate() passes; the graph is valid by brute force (exact;
+// pairs found by bounding boxes, and on small graphs all pairs, which must
+// agree). The
+// queries are checked against the same oracles: boundary_cycles(),
+// count_components(), faces_around() against the exact angular order,
+// neighbours() against a scan of all half-edges, cycle_area() signs and
+// face_area() values against exact areas (face_area promises the exact
+// area rounded once); and at a few points and segments built from the
+// graph's own points (vertices, rounded edge midpoints, rounded centroids),
+// PointLocator and locate_by_scan against exact point location, and
+// stab_segment against the exact stabbing checks (tests/oracles/stab_walk.hpp).
 //
-// Input: readable text, see support/generated_graph.hpp, e.g.
+// Input: readable text (support/graph_input.hpp): a recipe naming a
+// generated graph, e.g.
 //   triangulation seed 7 vertices 30 mirror scale -3 drop 4
+// or a graph point by point, which is what the custom mutator writes
+// (support/graph_mutator.hpp: near-degenerate moves, edges added and
+// removed, components copied into faces, exact transforms), e.g.
+//   points 0 0, 4 0, 0 4, 1 1  edges 0 1, 1 2, 2 0
+// A graph given point by point that is not valid is skipped.
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
+#include "dcel/locate.hpp"
 #include "dcel/queries.hpp"
+#include "dcel/stab.hpp"
 #include "dcel/validate.hpp"
-#include "support/boost_oracle.hpp"
+#include "oracles/boost_oracle.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/exact.hpp"
+#include "oracles/reference_dcel.hpp"
+#include "oracles/stab_walk.hpp"
+#include "oracles/union_find.hpp"
 #include "support/dcel_views.hpp"
-#include "support/exact_oracle.hpp"
+#include "support/face_shapes.hpp"
 #include "support/fuzz_check.hpp"
-#include "support/generated_graph.hpp"
-#include "support/union_find.hpp"
+#include "support/graph_fuzzer.hpp"
+#include "support/graph_input.hpp"
 
 namespace dcel::fuzz {
 namespace {
 
-// Boost, the rational angle sort and the all-pairs check are superlinear;
-// 40 vertices (a family may add a few) keep a run to a few milliseconds
-// while leaving room for holes in holes, stars and long chains. The text
-// cap bounds the number of transforms and deletions the same way.
-constexpr std::size_t kMaxInput = 1024;
-constexpr std::size_t kMaxVertices = 40;
-constexpr std::size_t kMaxSteps = 32;
+// A few hundred vertices: the oracles are near E log E (the brute force's
+// pairs of overlapping boxes, the angle sorts, the traversal), so a run
+// stays within milliseconds under the sanitizers; a graph of that size
+// takes some 10 KB of text. The quadratic all-pairs brute force and
+// Boyer-Myrvold, which on large graphs cost more than everything else,
+// check small graphs only.
+constexpr std::size_t kMaxInput = 32 * 1024;
+constexpr GraphLimits kLimits{300, 900};
+constexpr std::size_t kSmallEdges = 24;
 
-std::string describe(const GeneratedGraph& c) {
-    return std::string(gen::family_name(c.params.family)) + " seed " + std::to_string(c.params.seed) + " vertices " +
-           std::to_string(c.params.vertices) + " (" + std::to_string(c.graph.vertices.size()) + " vertices, " +
-           std::to_string(c.graph.edges.size()) + " edges after " + std::to_string(c.transforms) + " transforms)";
+void check_validity(const GraphInput& in, const oracle::Defects& defects) {
+    const PlanarGraph& g = in.graph;
+    if (g.edges.size() <= kSmallEdges) {
+        FUZZ_CHECK(oracle::find_defects(g, oracle::PairSearch::AllPairs) == defects,
+                   "the brute force's bounding-box pairs and all pairs disagree on " << describe(in));
+    }
+    FUZZ_CHECK(defects.empty(),
+               "the generator made an invalid graph: " << describe(in) << ": " << oracle::describe(defects.kinds()));
+}
+
+void check_faces(const Dcel& d, const PlanarGraph& g) {
+    const std::vector<oracle::FaceShape> ours = testing::face_shapes(d);
+    const std::vector<oracle::FaceShape> reference = oracle::reference_faces(g);
+    FUZZ_CHECK(ours == reference,
+               "the DCEL has " << ours.size() << " faces, the reference DCEL " << reference.size() << "; they differ");
 }
 
 void check_cycles(const Dcel& d, const PlanarGraph& g) {
-    const std::vector<props::VertexCycle> ours = props::dcel_cycles(d);
-    const std::vector<props::VertexCycle> boost = props::boost_face_cycles(g);
+    const std::vector<oracle::Cycle> ours = testing::dcel_cycles(d);
+    const std::vector<oracle::Cycle> boost = oracle::boost_face_cycles(g);
     FUZZ_CHECK(ours == boost,
                "the DCEL has " << ours.size() << " boundary cycles, Boost's traversal " << boost.size() << "; they differ");
-    std::vector<props::VertexCycle> queried;
+    std::vector<oracle::Cycle> queried;
     for (const std::vector<VertexId>& c : boundary_cycles(d)) {
-        props::VertexCycle ids;
+        oracle::Cycle ids;
         for (const VertexId v : c) ids.push_back(v.index());
-        queried.push_back(props::canonical_cycle(std::move(ids)));
+        queried.push_back(oracle::canonical(ids));
     }
     std::sort(queried.begin(), queried.end());
     FUZZ_CHECK(queried == ours, "boundary_cycles() differs from the cycles walked by next");
 
-    const props::BoyerMyrvoldAnswer bm = props::boyer_myrvold(g);
+    if (g.edges.size() > kSmallEdges) return;
+    const oracle::BoyerMyrvoldAnswer bm = oracle::boyer_myrvold(g);
     FUZZ_CHECK(bm.planar, "Boyer-Myrvold calls a valid straight-line graph non-planar");
     FUZZ_CHECK(bm.faces == ours.size(),
                "Boyer-Myrvold's embedding has " << bm.faces << " faces, the DCEL " << ours.size() << " cycles");
 }
 
 void check_euler(const Dcel& d, const PlanarGraph& g) {
-    const std::size_t c = props::count_components_by_union_find(g);
+    const std::size_t c = oracle::count_components(g);
     const std::size_t v = d.num_vertices(), e = d.num_edges(), f = d.num_faces();
     FUZZ_CHECK(v + f == e + 1 + c, "V - E + F = " << v << " - " << e << " + " << f << ", but 1 + C = " << 1 + c);
     FUZZ_CHECK(count_components(d) == c, "count_components() " << count_components(d) << ", union-find " << c);
@@ -96,7 +133,7 @@ void check_faces_around(const Dcel& d) {
         }
         const Point centre = d.point(v);
         std::sort(ring.begin(), ring.end(), [&](HalfEdgeId a, HalfEdgeId b) {
-            return props::angle_order(centre, d.point(d.target(a)), d.point(d.target(b))) < 0;
+            return oracle::angle_order(centre, d.point(d.target(a)), d.point(d.target(b))) < 0;
         });
         const auto start = std::find(ring.begin(), ring.end(), d.out(v));
         FUZZ_CHECK(start != ring.end(), "out(" << v.str() << ") does not leave it");
@@ -122,56 +159,117 @@ void check_neighbours(const Dcel& d) {
     }
 }
 
-int sign_of(const props::Rational& r) { return r > 0 ? 1 : (r < 0 ? -1 : 0); }
+int sign_of(const oracle::Rational& r) { return r.sign(); }
 int sign_of(Sign s) { return s == Sign::Positive ? 1 : (s == Sign::Negative ? -1 : 0); }
 
 void check_areas(const Dcel& d) {
     for (Index i = 0; i < d.num_faces(); ++i) {
         const FaceId f(i);
         if (d.is_unbounded(f)) continue;
-        props::Rational twice = props::twice_area(props::cycle_points(d, d.outer(f)));
+        oracle::Rational twice = oracle::twice_area(testing::cycle_points(d, d.outer(f)));
         FUZZ_CHECK(sign_of(cycle_area(d, d.outer(f)).sign) == sign_of(twice),
                    "cycle_area sign of f" << i << "'s outer cycle");
         for (const HalfEdgeId h : d.inner(f)) {
-            const props::Rational hole = props::twice_area(props::cycle_points(d, h));
+            const oracle::Rational hole = oracle::twice_area(testing::cycle_points(d, h));
             FUZZ_CHECK(sign_of(cycle_area(d, h).sign) == sign_of(hole), "cycle_area sign of a hole of f" << i);
             twice += hole;
         }
-        const props::Rational exact = twice / 2;
+        const oracle::Rational exact = twice / 2;
         const Area got = face_area(d, f);
         FUZZ_CHECK(exact > 0 && got.sign == Sign::Positive,
                    "f" << i << " has area of sign " << sign_of(exact) << ", face_area says " << sign_of(got.sign));
-        FUZZ_CHECK(props::is_nearest_double(got.value, exact), "face_area(f" << i << ") = " << got.value
-                                                                             << " is not the exact area " << exact.str()
-                                                                             << " rounded to the nearest double");
+        FUZZ_CHECK(oracle::is_nearest_double(got.value, exact), "face_area(f" << i << ") = " << got.value
+                                                                              << " is not the exact area " << exact.str()
+                                                                              << " rounded to the nearest double");
     }
 }
 
-void check(const GeneratedGraph& c) {
-    const PlanarGraph& g = c.graph;
-    const props::Defects defects = props::find_defects(g);
-    FUZZ_CHECK(defects.empty(), "the generator made an invalid graph: " << describe(c));
+// Probe points from the graph's own geometry, where location is hardest: a
+// vertex, the rounded midpoint of an edge (on it or within rounding), and
+// the rounded centroid of three vertices (often inside a face).
+std::vector<Point> probes(const PlanarGraph& g) {
+    std::vector<Point> out;
+    const std::size_t n = g.vertices.size(), m = g.edges.size();
+    if (n == 0) return out;
+    for (std::size_t k = 1; k <= 2; ++k) {
+        const Point a = g.vertices[(k * 7919) % n], b = g.vertices[(k * 104729 + 1) % n], c = g.vertices[(k * 13 + 2) % n];
+        out.push_back(a);
+        if (m > 0) {
+            const GraphEdge& e = g.edges[(k * 31) % m];
+            const Point u = g.vertices[e.u.index()], w = g.vertices[e.v.index()];
+            out.push_back({(u.x + w.x) / 2, (u.y + w.y) / 2});
+        }
+        out.push_back({(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3});
+    }
+    return out;
+}
+
+void check_location_and_stabbing(const Dcel& d, const PlanarGraph& g) {
+    const std::vector<Point> points = probes(g);
+    if (points.empty()) return;
+    const oracle::ExactLocator exact(d);
+    const PointLocator locator(d);
+    for (const Point p : points) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;  // a centroid of huge coordinates overflows
+        const Location want = exact.locate(p);
+        FUZZ_CHECK(locator.locate(p) == want,
+                   "PointLocator puts (" << p.x << ", " << p.y << ") " << locator.locate(p) << ", exact location " << want);
+        FUZZ_CHECK(locate_by_scan(d, p) == want, "locate_by_scan puts (" << p.x << ", " << p.y << ") "
+                                                                         << locate_by_scan(d, p) << ", exact location "
+                                                                         << want);
+    }
+    for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
+        const Point a = points[i], b = points[i + 1];
+        if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) continue;
+        const std::string problem = oracle::check_walk(d, exact, a, b, stab_segment(d, a, b));
+        FUZZ_CHECK(problem.empty(),
+                   "stab_segment from (" << a.x << ", " << a.y << ") to (" << b.x << ", " << b.y << "): " << problem);
+    }
+}
+
+// Skips (false) a graph given point by point that is not valid; a
+// generated one must be.
+bool check(const GraphInput& in) {
+    const PlanarGraph& g = in.graph;
+    const oracle::Defects defects = oracle::find_defects(g);
+    if (!in.generated && !defects.empty()) return false;
+    check_validity(in, defects);
     Dcel d;
     try {
         d = build(g);
     } catch (const InvalidInput& e) {
-        FUZZ_CHECK(false, "build rejects a valid generated graph, " << describe(c) << ": " << e.what());
+        FUZZ_CHECK(false, "build rejects a valid graph, " << describe(in) << ": " << e.what());
     }
     const CheckResult v = validate(d);
     FUZZ_CHECK(!v, "validate rejects a built DCEL: [" << to_string(v->invariant) << "] " << v->message);
+    check_faces(d, g);
     check_cycles(d, g);
     check_euler(d, g);
     check_faces_around(d);
     check_neighbours(d);
     check_areas(d);
+    check_location_and_stabbing(d, g);
+    return true;
 }
+
+constexpr GraphInputCaps kCaps{kLimits.vertices, 32, {kLimits.vertices, kLimits.edges}};
+
+// The mutator's view of an input: a valid graph, or nothing.
+std::optional<PlanarGraph> valid_graph(std::string_view text) {
+    GraphInput in = decode_graph_input(text, kCaps);
+    if (!is_valid(in.graph)) return std::nullopt;
+    return std::move(in.graph);
+}
+
+constexpr GraphFuzzing kFuzzing{valid_graph, Validity::Keep, kLimits};
 
 }  // namespace
 }  // namespace dcel::fuzz
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    if (size > dcel::fuzz::kMaxInput) return -1;
-    dcel::fuzz::TokenReader in(std::string_view(reinterpret_cast<const char*>(data), size));
-    dcel::fuzz::check(dcel::fuzz::decode_generated_graph(in, dcel::fuzz::kMaxVertices, dcel::fuzz::kMaxSteps));
-    return 0;
+    using namespace dcel::fuzz;
+    if (size > kMaxInput) return -1;
+    return check(decode_graph_input(as_text(data, size), kCaps)) ? 0 : -1;  // -1: not added to the corpus
 }
+
+DCEL_GRAPH_FUZZER_HOOKS(dcel::fuzz::kFuzzing)

@@ -6,9 +6,27 @@
 // builds into a DCEL that validate() passes, or is refused with a clean
 // error; and that validate() and validate_all() agree on any dump read,
 // however broken. Never a crash, hang, leak or undefined behaviour.
+//
+// Compares with an independent JSON parser, nlohmann/json
+// (support/json_reference.hpp): the library's JSON reader accepts exactly
+// the documents nlohmann accepts, but those nested deeper than the
+// reader's limit (which it refuses) and those with a number beyond the
+// range of a double (which nlohmann refuses; the reader refuses them only
+// where it reads the number). The graph and faces readers accept exactly
+// the documents whose values, as nlohmann reads them, have the documented
+// shape, and read the same values (but where a number that is no integer
+// reads as one, 5e-3241 or 1.00000000000000001: the reader decides an index
+// on the exact decimal and must refuse it, nlohmann's double cannot tell);
+// a dump the reader accepts holds nlohmann's values field by field.
+//
+// And the two routes from decimal text to a double (io/decimal.hpp):
+// std::from_chars and the strtod_l fallback that libc++ builds use must
+// give the same answer (match length, error, bits) wherever a number could
+// start in the input.
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -16,9 +34,12 @@
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
 #include "dcel/io/dcel_json.hpp"
+#include "dcel/io/decimal.hpp"
 #include "dcel/io/graph_json.hpp"
+#include "dcel/io/json_reader.hpp"
 #include "dcel/validate.hpp"
 #include "support/fuzz_check.hpp"
+#include "support/json_reference.hpp"
 
 namespace dcel::fuzz {
 namespace {
@@ -68,13 +89,71 @@ void check_validators_agree(const DcelDump& d) {
     }
 }
 
-void graph_path(std::string_view text) {
+// At up to 16 places where a number could start (after a byte that cannot
+// be part of one), parse_double and its strtod fallback agree.
+void check_decimal_routes(std::string_view text) {
+    auto starts = [](char c) {
+        return (c >= '0' && c <= '9') || c == '-' || c == '.' || c == 'i' || c == 'I' || c == 'n' || c == 'N';
+    };
+    int tried = 0;
+    for (std::size_t i = 0; i < text.size() && tried < 16; ++i) {
+        if (!starts(text[i]) || (i > 0 && starts(text[i - 1]))) continue;
+        ++tried;
+        double a = 0.5, b = 0.5;  // untouched on error, as from_chars leaves it
+        const auto ra = io::parse_double(text.data() + i, text.data() + text.size(), a);
+        const auto rb = io::parse_double_strtod(text.data() + i, text.data() + text.size(), b);
+        FUZZ_CHECK(ra.ptr == rb.ptr && ra.ec == rb.ec && std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b),
+                   "parse_double and its strtod fallback differ at byte "
+                       << i << ": " << (ra.ptr - text.data() - i) << " vs " << (rb.ptr - text.data() - i) << " bytes, " << a
+                       << " vs " << b);
+    }
+}
+
+// Only documents nlohmann accepts and the reader's depth limit allows have
+// values to compare.
+bool comparable(const JsonFacts& facts) { return facts.accepted && facts.depth <= io::JsonReader::kMaxDepth; }
+
+bool reader_accepts_json(std::string_view text) {
+    try {
+        io::JsonReader r(text);
+        r.skip_value();
+        r.end_document();
+        return true;
+    } catch (const InvalidInput&) {
+        return false;
+    }
+}
+
+void check_json_syntax(std::string_view text, const JsonFacts& facts) {
+    const bool ours = reader_accepts_json(text);
+    if (facts.has_nul) {
+        // nlohmann stops at a NUL; JSON has none outside strings and none raw inside.
+        FUZZ_CHECK(!ours, "the reader accepts a document with a NUL byte");
+    } else if (facts.accepted) {
+        FUZZ_CHECK(ours == (facts.depth <= io::JsonReader::kMaxDepth), "nlohmann accepts a document "
+                                                                           << facts.depth << " deep; the reader "
+                                                                           << (ours ? "accepts" : "refuses") << " it");
+    } else if (!facts.number_overflow) {
+        FUZZ_CHECK(!ours, "the reader accepts a document nlohmann refuses: " << facts.error);
+    }
+}
+
+void graph_path(std::string_view text, const JsonFacts& facts) {
     PlanarGraph g;
+    const std::optional<PlanarGraph> expected = comparable(facts) ? expected_graph(text, facts)
+                                                                  : std::optional<PlanarGraph>();
     try {
         g = io::read_graph(text);
     } catch (const InvalidInput& e) {
         check_clean(e, true);
+        // An index nlohmann rounded to an integer is one the reader must refuse.
+        FUZZ_CHECK(!expected || facts.rounded_to_integer, "read_graph refuses a graph nlohmann reads: " << e.what());
         return;
+    }
+    if (comparable(facts)) {
+        FUZZ_CHECK(expected, "read_graph accepts a document that is no graph by nlohmann's reading");
+        FUZZ_CHECK(expected->vertices == g.vertices && expected->edges == g.edges,
+                   "read_graph reads other values than nlohmann");
     }
     const PlanarGraph again = io::read_graph(io::write_graph(g));
     FUZZ_CHECK(same_points(g.vertices, again.vertices) && g.edges == again.edges, "graph round trip changed it");
@@ -97,7 +176,7 @@ void graph_path(std::string_view text) {
     }
 }
 
-void dump_path(std::string_view text) {
+void dump_path(std::string_view text, const JsonFacts& facts) {
     DcelDump d;
     try {
         d = io::read_dump(text);
@@ -105,17 +184,26 @@ void dump_path(std::string_view text) {
         check_clean(e, true);
         return;
     }
+    if (comparable(facts)) FUZZ_CHECK(dump_matches(text, d), "read_dump reads other values than nlohmann");
     FUZZ_CHECK(same_dump(io::read_dump(io::write_dump(d, io::DumpStyle::Compact)), d), "dump round trip changed it");
     check_validators_agree(d);
 }
 
-void faces_path(std::string_view text) {
+void faces_path(std::string_view text, const JsonFacts& facts) {
     std::vector<std::vector<Index>> cycles;
+    const auto expected = comparable(facts) ? expected_faces(text, facts) : std::nullopt;
     try {
         cycles = io::read_faces_answer(text);
     } catch (const InvalidInput& e) {
         check_clean(e, true);
+        // An index nlohmann rounded to an integer is one the reader must refuse.
+        FUZZ_CHECK(!expected || facts.rounded_to_integer,
+                   "read_faces_answer refuses an answer nlohmann reads: " << e.what());
         return;
+    }
+    if (comparable(facts)) {
+        FUZZ_CHECK(expected, "read_faces_answer accepts a document that is no answer by nlohmann's reading");
+        FUZZ_CHECK(*expected == cycles, "read_faces_answer reads other values than nlohmann");
     }
     std::vector<std::vector<VertexId>> ids;
     for (const auto& c : cycles) {
@@ -148,9 +236,12 @@ void answer_path(std::string_view text) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     if (size > dcel::fuzz::kMaxInput) return -1;  // -1: not added to the corpus
     const std::string_view text(reinterpret_cast<const char*>(data), size);
-    dcel::fuzz::graph_path(text);
-    dcel::fuzz::dump_path(text);
-    dcel::fuzz::faces_path(text);
+    const dcel::fuzz::JsonFacts facts = dcel::fuzz::json_facts(text);
+    dcel::fuzz::check_json_syntax(text, facts);
+    dcel::fuzz::check_decimal_routes(text);
+    dcel::fuzz::graph_path(text, facts);
+    dcel::fuzz::dump_path(text, facts);
+    dcel::fuzz::faces_path(text, facts);
     dcel::fuzz::answer_path(text);
     return 0;
 }

@@ -16,6 +16,10 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
 
+// libFuzzer's byte mutations, which the harnesses' custom mutators call; a
+// replay never mutates, so this stand-in only lets them link.
+extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* /*data*/, std::size_t size, std::size_t /*max_size*/) { return size; }
+
 namespace {
 
 std::vector<std::filesystem::path> inputs_under(const std::filesystem::path& arg) {

@@ -1,5 +1,5 @@
-// Crossing detection against brute force (exact_oracle's find_defects, all
-// pairs): on valid graphs, on graphs with one planted crossing, touch or
+// Crossing detection against brute force (oracles/brute_force.hpp's
+// find_defects): on valid graphs, on graphs with one planted crossing, touch or
 // overlap, and on raw random segments that may meet in any way. build()
 // must reject exactly the graphs brute force finds a defect in, and the pair
 // it names must really meet the way it says.
@@ -11,11 +11,15 @@
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
 #include "dcel/io/graph_json.hpp"
-#include "support/exact_oracle.hpp"
+#include "oracles/brute_force.hpp"
 #include "support/graph_case.hpp"
 
 namespace dcel::props {
 namespace {
+
+using oracle::Defects;
+using oracle::find_defects;
+using oracle::Meeting;
 
 bool has_pair(const Defects& d, EdgeId a, EdgeId b, Meeting how) {
     const Index lo = std::min(a.index(), b.index()), hi = std::max(a.index(), b.index());

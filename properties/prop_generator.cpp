@@ -8,11 +8,16 @@
 
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
-#include "support/exact_oracle.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/exact.hpp"
 #include "support/graph_case.hpp"
 
 namespace dcel::props {
 namespace {
+
+using oracle::exact;
+using oracle::find_defects;
+using oracle::Rational;
 
 std::size_t fractional_coordinates(const PlanarGraph& g) {
     std::size_t n = 0;
@@ -52,8 +57,8 @@ RC_GTEST_PROP(Generator, prop_shrink_candidates_are_valid_and_smaller, ()) {
 }
 
 Rational power_of_two(int k) {
-    const boost::multiprecision::cpp_int one = 1;
-    return k >= 0 ? Rational(one << k) : Rational(one, one << -k);
+    const oracle::BigInt p = oracle::BigInt(1) << static_cast<unsigned>(k >= 0 ? k : -k);
+    return k >= 0 ? Rational(p) : Rational(oracle::BigInt(1), p);
 }
 
 RC_GTEST_PROP(Generator, prop_transforms_are_exact_or_refused, ()) {

@@ -14,6 +14,8 @@
 namespace dcel::props {
 namespace {
 
+using testing::face_shapes_renamed;
+
 std::vector<Index> identity(std::size_t n) {
     std::vector<Index> v(n);
     std::iota(v.begin(), v.end(), Index{0});

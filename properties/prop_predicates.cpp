@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "dcel/geometry/predicates.hpp"
-#include "support/exact_oracle.hpp"
+#include "oracles/exact.hpp"
 #include "support/point_gen.hpp"
 
 namespace dcel::props {
@@ -19,7 +19,7 @@ constexpr std::size_t kBatch = 32;
 
 void check_orient2d(const Triple& t) {
     const Point a = t.p[0], b = t.p[1], c = t.p[2];
-    const int expected = orient_sign(a, b, c);
+    const int expected = oracle::orientation(a, b, c);
     // Every order of the arguments: a rotation agrees, a swap negates. Each
     // order rounds differently, so each is a separate chance to go wrong.
     RC_ASSERT(to_int(orient2d(a, b, c)) == expected);
@@ -38,8 +38,8 @@ RC_GTEST_PROP(Predicates, prop_compare_angle_agrees_with_rationals, ()) {
     for (const Triple& t : *rc::gen::container<std::vector<Triple>>(kBatch, adversarial_triples())) {
         const Point centre = t.p[0], a = t.p[1], b = t.p[2];
         if (a == centre || b == centre) continue;  // a direction needs a second point
-        RC_ASSERT(to_int(compare_angle(centre, a, b)) == angle_order(centre, a, b));
-        RC_ASSERT(to_int(compare_angle(centre, b, a)) == -angle_order(centre, a, b));
+        RC_ASSERT(to_int(compare_angle(centre, a, b)) == oracle::angle_order(centre, a, b));
+        RC_ASSERT(to_int(compare_angle(centre, b, a)) == -oracle::angle_order(centre, a, b));
     }
 }
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "dcel/build.hpp"
-#include "support/exact_oracle.hpp"
+#include "oracles/exact.hpp"
 #include "support/graph_case.hpp"
 
 namespace dcel::props {
@@ -31,7 +31,7 @@ RC_GTEST_PROP(Rotation, prop_next_of_twin_turns_clockwise_through_all_outgoing, 
         const Point centre = g.vertices[v];
         // Clockwise = descending counterclockwise angle.
         std::sort(ring.begin(), ring.end(), [&](Index a, Index b) {
-            return angle_order(centre, g.vertices[head[a].index()], g.vertices[head[b].index()]) > 0;
+            return oracle::angle_order(centre, g.vertices[head[a].index()], g.vertices[head[b].index()]) > 0;
         });
         HalfEdgeId h(ring[0]);
         for (std::size_t i = 1; i <= ring.size(); ++i) {

@@ -10,7 +10,7 @@
 #include "dcel/error.hpp"
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/generate.hpp"
-#include "support/exact_oracle.hpp"
+#include "oracles/brute_force.hpp"
 
 namespace dcel::gen {
 namespace {
@@ -60,7 +60,7 @@ TEST(Plant, EachDefectIsRejectedWithItsKind) {
         for (std::uint64_t seed = 0; seed < 10; ++seed) {
             const std::optional<PlanarGraph> bad = plant(square(), defect, seed);
             ASSERT_TRUE(bad.has_value());
-            EXPECT_FALSE(props::find_defects(*bad).empty());
+            EXPECT_FALSE(oracle::find_defects(*bad).empty());
             try {
                 (void)build(*bad);
                 ADD_FAILURE() << "accepted a planted defect";
@@ -117,7 +117,7 @@ TEST(Shrink, CandidatesOfAValidGraphAreValid) {
         const PlanarGraph g = generate({f, 3, 30});
         for (const PlanarGraph& c : shrink_candidates(g)) {
             EXPECT_EQ(find_problem(c), std::nullopt) << family_name(f);
-            EXPECT_TRUE(props::find_defects(c).empty()) << family_name(f);
+            EXPECT_TRUE(oracle::find_defects(c).empty()) << family_name(f);
         }
     }
 }

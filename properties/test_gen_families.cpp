@@ -20,8 +20,9 @@
 #include "dcel/gen/graph_builder.hpp"
 #include "dcel/gen/rng.hpp"
 #include "dcel/queries.hpp"
-#include "support/exact_oracle.hpp"
-#include "support/union_find.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/exact.hpp"
+#include "oracles/union_find.hpp"
 
 namespace dcel::gen {
 namespace {
@@ -54,7 +55,7 @@ Shape shape_of(const PlanarGraph& g, bool collinear = false) {
     const Dcel d = build(g);
     Shape s;
     s.edges = g.edges.size();
-    s.components = props::count_components_by_union_find(g);
+    s.components = oracle::count_components(g);
     std::vector<std::size_t> degree(g.vertices.size(), 0);
     for (const GraphEdge& e : g.edges) ++degree[e.u.index()], ++degree[e.v.index()];
     for (const std::size_t k : degree) {
@@ -102,7 +103,7 @@ Shape shape_of(const PlanarGraph& g, bool collinear = false) {
     for (std::size_t k = 0; collinear && k < std::min<std::size_t>(16, g.edges.size()); ++k) {
         const Point a = g.vertices[g.edges[k].u.index()], b = g.vertices[g.edges[k].v.index()];
         std::size_t on_line = 0;
-        for (const Point& p : g.vertices) on_line += props::orient_sign(a, b, p) == 0;
+        for (const Point& p : g.vertices) on_line += oracle::orientation(a, b, p) == 0;
         s.most_collinear = std::max(s.most_collinear, on_line);
     }
     return s;
@@ -129,7 +130,7 @@ TEST(Families, ExactlyTheVerticesAskedAndValidAtEverySize) {
                     EXPECT_EQ(find_problem(g), std::nullopt);
                 }
                 if (n <= 100) {
-                    EXPECT_TRUE(props::find_defects(g).empty());
+                    EXPECT_TRUE(oracle::find_defects(g).empty());
                 }
             }
         }

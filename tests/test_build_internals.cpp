@@ -1,11 +1,10 @@
 // The pieces build() is made of, each against a plain reference: the lex
 // order against std::sort with lex_less, the ring sort against the angular
-// order computed in rationals (cpp_rational, no rounding), the skip-list
+// order of the exact oracle (oracles/exact.hpp, no rounding), the skip-list
 // status against a std::vector.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <boost/multiprecision/cpp_int.hpp>
 #include <cfloat>
 #include <cmath>
 #include <random>
@@ -16,11 +15,10 @@
 #include "dcel/build/ring_sort.hpp"
 #include "dcel/build/status_list.hpp"
 #include "dcel/error.hpp"
+#include "oracles/exact.hpp"
 
 namespace dcel {
 namespace {
-
-using Rational = boost::multiprecision::cpp_rational;
 
 // Doubles that stress exact code: small integers, near-equal large values,
 // subnormals, signed zeros, values near the double limit.
@@ -149,18 +147,10 @@ TEST(LexOrder, AllOnOneVerticalLineAndSignedZeros) {
 
 // ---- Ring sort
 
-Rational exact(double v) { return Rational(v); }
-
-// Angular order from east, counterclockwise, in rationals; ties by id.
+// Angular order from east, counterclockwise, exact; ties by id.
 bool oracle_before(Point c, const RingEntry& a, const RingEntry& b) {
-    const Rational ax = exact(a.target.x) - exact(c.x), ay = exact(a.target.y) - exact(c.y);
-    const Rational bx = exact(b.target.x) - exact(c.x), by = exact(b.target.y) - exact(c.y);
-    const int ha = (ay > 0 || (ay == 0 && ax > 0)) ? 0 : 1;
-    const int hb = (by > 0 || (by == 0 && bx > 0)) ? 0 : 1;
-    if (ha != hb) return ha < hb;
-    const Rational cross = ax * by - ay * bx;
-    if (cross != 0) return cross > 0;
-    return a.half_edge < b.half_edge;
+    const int order = oracle::angle_order(c, a.target, b.target);
+    return order != 0 ? order < 0 : a.half_edge < b.half_edge;
 }
 
 void expect_ring_sorted(Point c, std::vector<RingEntry> ring) {
@@ -172,11 +162,7 @@ void expect_ring_sorted(Point c, std::vector<RingEntry> ring) {
     for (std::size_t i = 0; i < ring.size(); ++i) EXPECT_EQ(ring[i].half_edge, expected[i].half_edge) << i;
     std::size_t same = ring.size();
     for (std::size_t i = 0; i + 1 < ring.size() && same == ring.size(); ++i) {
-        const Rational ax = exact(ring[i].target.x) - exact(c.x), ay = exact(ring[i].target.y) - exact(c.y);
-        const Rational bx = exact(ring[i + 1].target.x) - exact(c.x), by = exact(ring[i + 1].target.y) - exact(c.y);
-        const bool parallel = ax * by == ay * bx;
-        const bool same_way = (ax > 0) == (bx > 0) && (ax < 0) == (bx < 0) && (ay > 0) == (by > 0) && (ay < 0) == (by < 0);
-        if (parallel && same_way) same = i;
+        if (oracle::angle_order(c, ring[i].target, ring[i + 1].target) == 0) same = i;
     }
     EXPECT_EQ(first_same_direction(c, ring), same);
     EXPECT_EQ(reported, same);

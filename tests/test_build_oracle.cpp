@@ -1,178 +1,33 @@
-// build() against a brute-force oracle that shares none of its machinery
-// (no lex order, rank graph, sweep or union-find): on random small graphs,
-// the oracle finds next() by looking at every half-edge at a vertex, walks
-// the cycles, tells bounded faces from holes by exact signed area, and puts
-// each component in the innermost positive cycle that winds around it
-// (exact winding numbers). Invalid graphs: build() must throw exactly when
-// a pairwise check finds two edges meeting badly, and name a real culprit.
+// build() against the reference DCEL (oracles/reference_dcel.hpp), which
+// shares none of its machinery (no lex order, rank graph, sweep or filtered
+// predicate): on random small graphs, the reference sorts each vertex's
+// half-edges by exact angle, walks the cycles, tells bounded faces from
+// holes by exact signed area, and puts each component in the innermost
+// positive cycle that winds around it. Invalid graphs: build() must throw
+// exactly when brute force (oracles/brute_force.hpp) finds a defect, and
+// name one it found.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <optional>
 #include <random>
 #include <set>
 #include <vector>
 
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
-#include "dcel/geometry/area.hpp"
-#include "dcel/geometry/predicates.hpp"
-#include "dcel/geometry/segments.hpp"
+#include "oracles/brute_force.hpp"
+#include "oracles/reference_dcel.hpp"
 #include "support/face_shapes.hpp"
 
 namespace dcel {
 namespace {
 
-using testing::Cycle;
+using oracle::Defects;
+using oracle::find_defects;
+using oracle::Meeting;
 using testing::FaceShape;
-using testing::sorted_shapes;
 
-Point at(const PlanarGraph& g, Index v) { return g.vertices[v]; }
-Index origin_of(const PlanarGraph& g, Index h) {
-    return (h & 1U) == 0 ? g.edges[h / 2].u.index() : g.edges[h / 2].v.index();
-}
-Index target_of(const PlanarGraph& g, Index h) { return origin_of(g, h ^ 1U); }
-
-// next(u->v): of the half-edges leaving v, the first one met turning
-// clockwise from v->u. By brute force over all of them: O(d) per half-edge.
-std::vector<Index> oracle_next(const PlanarGraph& g) {
-    const auto hs = static_cast<Index>(2 * g.edges.size());
-    std::vector<Index> next(hs);
-    for (Index h = 0; h < hs; ++h) {
-        const Index back = h ^ 1U;  // v->u
-        const Index v = origin_of(g, back);
-        const Point c = at(g, v);
-        const Point ref = at(g, target_of(g, back));
-        // Clockwise from ref: the largest angle below ref's, else the largest of all.
-        std::optional<Index> best_below;
-        std::optional<Index> best_any;
-        for (Index x = 0; x < hs; ++x) {
-            if (origin_of(g, x) != v || x == back) continue;
-            const Point p = at(g, target_of(g, x));
-            auto later = [&](std::optional<Index> cur) {
-                return !cur || compare_angle(c, at(g, target_of(g, *cur)), p) == Sign::Negative;
-            };
-            if (compare_angle(c, p, ref) == Sign::Negative && later(best_below)) best_below = x;
-            if (later(best_any)) best_any = x;
-        }
-        next[h] = best_below ? *best_below : (best_any ? *best_any : back);
-    }
-    return next;
-}
-
-// Winding number of the closed walk `cycle` (origin vertices) around p,
-// which is on none of its edges. Exact: coordinate comparisons and orient2d.
-int winding(const PlanarGraph& g, const Cycle& cycle, Point p) {
-    int w = 0;
-    for (std::size_t i = 0; i < cycle.size(); ++i) {
-        const Point a = at(g, cycle[i]);
-        const Point b = at(g, cycle[(i + 1) % cycle.size()]);
-        if (a.y <= p.y && p.y < b.y && orient2d(a, b, p) == Sign::Positive) ++w;
-        if (b.y <= p.y && p.y < a.y && orient2d(a, b, p) == Sign::Negative) --w;
-    }
-    return w;
-}
-
-Sign cycle_area_sign(const PlanarGraph& g, const Cycle& cycle) {
-    return polygon_area_sign([&](auto&& f) {
-        for (std::size_t i = 0; i < cycle.size(); ++i) f(at(g, cycle[i]), at(g, cycle[(i + 1) % cycle.size()]));
-    });
-}
-
-double cycle_twice_area(const PlanarGraph& g, const Cycle& cycle) {
-    return polygon_twice_area([&](auto&& f) {
-        for (std::size_t i = 0; i < cycle.size(); ++i) f(at(g, cycle[i]), at(g, cycle[(i + 1) % cycle.size()]));
-    });
-}
-
-std::vector<FaceShape> oracle_faces(const PlanarGraph& g) {
-    const auto n = static_cast<Index>(g.vertices.size());
-    const std::vector<Index> next = oracle_next(g);
-    // Components by repeated relaxation (slow and obviously right).
-    std::vector<Index> comp(n);
-    for (Index v = 0; v < n; ++v) comp[v] = v;
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (const GraphEdge& e : g.edges) {
-            const Index m = std::min(comp[e.u.index()], comp[e.v.index()]);
-            for (const VertexId x : {e.u, e.v}) {
-                if (comp[x.index()] != m) comp[x.index()] = m, changed = true;
-            }
-        }
-    }
-    std::vector<Cycle> cycles;
-    std::vector<Index> cycle_comp;
-    std::vector<char> seen(next.size(), 0);
-    for (Index h = 0; h < next.size(); ++h) {
-        if (seen[h] != 0) continue;
-        Cycle c;
-        for (Index x = h; seen[x] == 0; x = next[x]) {
-            seen[x] = 1;
-            c.push_back(origin_of(g, x));
-        }
-        cycles.push_back(c);
-        cycle_comp.push_back(comp[c[0]]);
-    }
-    // Positive cycles bound faces; every other cycle is a component's outer boundary.
-    std::vector<FaceShape> faces(1);  // faces[0]: unbounded
-    std::vector<std::size_t> face_of_cycle(cycles.size(), 0);
-    for (std::size_t i = 0; i < cycles.size(); ++i) {
-        if (cycle_area_sign(g, cycles[i]) == Sign::Positive) {
-            face_of_cycle[i] = faces.size();
-            faces.push_back({cycles[i], {}, {}});
-        }
-    }
-    // Each component (a hole or an isolated vertex) goes in the innermost
-    // positive cycle of another component that winds around it; nested
-    // faces around one point are nested regions, so the smallest area wins.
-    auto container = [&](Index component) {
-        std::size_t best = 0;
-        double best_area = 0;
-        for (std::size_t i = 0; i < cycles.size(); ++i) {
-            if (face_of_cycle[i] == 0 || cycle_comp[i] == component) continue;
-            if (winding(g, cycles[i], at(g, component)) == 0) continue;
-            const double area = cycle_twice_area(g, cycles[i]);  // exact here: small integers
-            if (best == 0 || area < best_area) best = face_of_cycle[i], best_area = area;
-        }
-        return best;
-    };
-    for (std::size_t i = 0; i < cycles.size(); ++i) {
-        if (face_of_cycle[i] == 0) faces[container(cycle_comp[i])].holes.push_back(cycles[i]);
-    }
-    std::vector<char> has_edge(n, 0);
-    for (const GraphEdge& e : g.edges) has_edge[e.u.index()] = has_edge[e.v.index()] = 1;
-    for (Index v = 0; v < n; ++v) {
-        if (has_edge[v] == 0) faces[container(v)].isolated.push_back(v);
-    }
-    return sorted_shapes(faces);
-}
-
-// Whether edges a and b (input indexes) meet other than at a shared endpoint.
-bool edges_conflict(const PlanarGraph& g, Index a, Index b) {
-    const GraphEdge& e = g.edges[a];
-    const GraphEdge& f = g.edges[b];
-    const std::set<Index> ends{e.u.index(), e.v.index(), f.u.index(), f.v.index()};
-    if (ends.size() == 2) return true;  // a duplicate edge
-    const Contact c = segment_contact(at(g, e.u.index()), at(g, e.v.index()), at(g, f.u.index()), at(g, f.v.index()));
-    return c != Contact::None && c != Contact::SharedEndpoint;
-}
-
-bool vertex_on_edge(const PlanarGraph& g, Index v, Index k) {
-    const GraphEdge& e = g.edges[k];
-    return strictly_inside_segment(at(g, e.u.index()), at(g, e.v.index()), at(g, v));
-}
-
-bool valid(const PlanarGraph& g) {
-    for (Index a = 0; a < g.edges.size(); ++a) {
-        for (Index b = a + 1; b < g.edges.size(); ++b) {
-            if (edges_conflict(g, a, b)) return false;
-        }
-        for (Index v = 0; v < g.vertices.size(); ++v) {
-            if (vertex_on_edge(g, v, a)) return false;
-        }
-    }
-    return true;
-}
+bool valid(const PlanarGraph& g) { return find_defects(g).empty(); }
 
 // Whether u and v are already joined by a path in g (by search).
 bool connected(const PlanarGraph& g, Index u, Index v) {
@@ -233,7 +88,7 @@ TEST(BuildOracle, FacesHolesAndIsolatedVerticesMatchBruteForce) {
     for (int round = 0; round < 400; ++round) {
         const PlanarGraph g = random_graph(rng, true);
         ASSERT_TRUE(valid(g));
-        const std::vector<FaceShape> expected = oracle_faces(g);
+        const std::vector<FaceShape> expected = oracle::reference_faces(g);
         ASSERT_EQ(testing::face_shapes(build(g)), expected) << "round " << round;
         ASSERT_EQ(testing::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;
     }
@@ -246,7 +101,7 @@ TEST(BuildOracle, TreesAmongFramesMatchBruteForce) {
     std::mt19937_64 rng(2028);
     for (int round = 0; round < 300; ++round) {
         const PlanarGraph g = random_graph(rng, true, true);
-        const std::vector<FaceShape> expected = oracle_faces(g);
+        const std::vector<FaceShape> expected = oracle::reference_faces(g);
         ASSERT_EQ(testing::face_shapes(build(g)), expected) << "round " << round;
         ASSERT_EQ(testing::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;
     }
@@ -274,21 +129,40 @@ TEST(BuildOracle, RejectsExactlyTheInvalidGraphsAndNamesARealCulprit) {
             EXPECT_FALSE(ok) << "round " << round << ": " << e.what();
             const auto& es = e.edges();
             const auto& vs = e.vertices();
+            const Defects found = find_defects(g);
+            auto pair_found = [&](std::initializer_list<Meeting> how) {
+                const Index lo = std::min(es[0].index(), es[1].index()), hi = std::max(es[0].index(), es[1].index());
+                return std::any_of(found.edge_pairs.begin(), found.edge_pairs.end(), [&](const Defects::EdgePair& p) {
+                    return p.e1 == lo && p.e2 == hi && std::find(how.begin(), how.end(), p.how) != how.end();
+                });
+            };
             switch (e.kind()) {
                 case InputErrorKind::Crossing:
-                case InputErrorKind::DuplicateEdge:
                     ASSERT_EQ(es.size(), 2U) << e.what();
-                    EXPECT_TRUE(edges_conflict(g, es[0].index(), es[1].index())) << e.what();
+                    EXPECT_TRUE(pair_found({Meeting::Crossing})) << e.what();
                     break;
+                case InputErrorKind::DuplicateEdge: {
+                    ASSERT_EQ(es.size(), 2U) << e.what();
+                    // A real duplicate: the two edges join the same two vertices.
+                    auto ends = [&](EdgeId k) {
+                        const GraphEdge& x = g.edges[k.index()];
+                        return std::pair{std::min(x.u, x.v), std::max(x.u, x.v)};
+                    };
+                    EXPECT_NE(es[0], es[1]) << e.what();
+                    EXPECT_EQ(ends(es[0]), ends(es[1])) << e.what();
+                    break;
+                }
                 case InputErrorKind::Overlap:
                     ASSERT_EQ(es.size(), 2U) << e.what();
-                    EXPECT_TRUE(edges_conflict(g, es[0].index(), es[1].index())) << e.what();
+                    EXPECT_TRUE(pair_found({Meeting::Overlap, Meeting::Same})) << e.what();
                     break;
-                case InputErrorKind::VertexOnEdge:
+                case InputErrorKind::VertexOnEdge: {
                     ASSERT_EQ(es.size(), 1U) << e.what();
                     ASSERT_EQ(vs.size(), 1U) << e.what();
-                    EXPECT_TRUE(vertex_on_edge(g, vs[0].index(), es[0].index())) << e.what();
+                    const std::pair<Index, Index> named{vs[0].index(), es[0].index()};
+                    EXPECT_EQ(std::count(found.vertex_in_edge.begin(), found.vertex_in_edge.end(), named), 1) << e.what();
                     break;
+                }
                 default: ADD_FAILURE() << "unexpected kind: " << e.what();
             }
         }

@@ -56,7 +56,7 @@ Report show(Report r) {
 // The index of the answer cycle equal (as a cycle) to `want`.
 std::size_t find_cycle(const FacesAnswer& a, const std::vector<Index>& want) {
     for (std::size_t i = 0; i < a.size(); ++i) {
-        if (rotation_canonical(a[i]) == rotation_canonical(want)) return i;
+        if (canonical(a[i]) == canonical(want)) return i;
     }
     ADD_FAILURE() << "no such cycle";
     return 0;
@@ -126,7 +126,7 @@ TEST(CheckFaces, MissingCycleForEachDroppedCycle) {
         const Report r = compare_faces(d, shuffled(a, k));
         ASSERT_EQ(r.differences.size(), 1U) << check::report_text(r);
         EXPECT_EQ(r.differences[0].kind, DifferenceKind::MissingCycle);
-        EXPECT_EQ(rotation_canonical(r.differences[0].vertices), rotation_canonical(full[k]));
+        EXPECT_EQ(canonical(r.differences[0].vertices), canonical(full[k]));
     }
 }
 
@@ -168,7 +168,7 @@ TEST(CheckFaces, ReversedCycle) {
     const Report r = show(compare_faces(d, a));
     ASSERT_EQ(r.differences.size(), 1U);
     EXPECT_EQ(r.differences[0].kind, DifferenceKind::ReversedCycle);
-    EXPECT_EQ(rotation_canonical(r.differences[0].vertices), rotation_canonical({5, 4, 1, 0}));
+    EXPECT_EQ(canonical(r.differences[0].vertices), canonical({5, 4, 1, 0}));
 }
 
 // The mirror image (x -> -x) has every cycle of the original reversed. A
@@ -179,10 +179,10 @@ TEST(CheckFaces, MirrorImageReversesEveryCycle) {
     const Dcel d = build(g);
     const Dcel mirrored = build(*gen::apply(g, gen::Transform::Mirror));
     std::set<std::vector<Index>> cycles;
-    for (const auto& c : faces_answer(d)) cycles.insert(rotation_canonical(c));
+    for (const auto& c : faces_answer(d)) cycles.insert(canonical(c));
     std::size_t expected = 0;
     for (const auto& c : faces_answer(d)) {
-        expected += cycles.count(rotation_canonical({c.rbegin(), c.rend()})) == 0 ? 1 : 0;
+        expected += cycles.count(canonical({c.rbegin(), c.rend()})) == 0 ? 1 : 0;
     }
     const Report r = show(compare_faces(d, faces_answer(mirrored)));
     EXPECT_EQ(expected, 3U);  // West, East and the rectangle's outside
@@ -345,7 +345,7 @@ TEST(CheckDump, WrongHole) {
     ASSERT_EQ(count_kind(r, DifferenceKind::WrongHole), 1U);
     const check::Difference* wrong = find_kind(r, DifferenceKind::WrongHole);
     ASSERT_NE(wrong, nullptr);
-    EXPECT_EQ(rotation_canonical(wrong->vertices), rotation_canonical({6, 8, 7}));
+    EXPECT_EQ(canonical(wrong->vertices), canonical({6, 8, 7}));
     EXPECT_NE(wrong->message.find("is a hole of the face bounded by [0, 1, 4, 5]"), std::string::npos);
     EXPECT_NE(wrong->message.find("but the answer puts it in answer face"), std::string::npos);
     EXPECT_NE(wrong->message.find("(the face bounded by [1, 2, 3, 12, 3, 4])"), std::string::npos);

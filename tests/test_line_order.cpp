@@ -1,10 +1,9 @@
-// The direction and line-order predicates against exact rationals (boost
-// cpp_rational) on random and adversarial inputs: large offsets with tiny
-// differences, tiny magnitudes, values near the double limit.
+// The direction and line-order predicates against the exact oracles
+// (oracles/exact.hpp) on random and adversarial inputs: large offsets with
+// tiny differences, tiny magnitudes, values near the double limit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <boost/multiprecision/cpp_int.hpp>
 #include <cfloat>
 #include <cmath>
 #include <random>
@@ -12,17 +11,13 @@
 #include "dcel/geometry/directions.hpp"
 #include "dcel/geometry/line_order.hpp"
 #include "dcel/geometry/predicates.hpp"
+#include "oracles/exact.hpp"
 
 namespace dcel {
 namespace {
 
-using Rational = boost::multiprecision::cpp_rational;
-Rational q(double v) { return Rational(v); }
-Sign rsign(const Rational& r) { return r > 0 ? Sign::Positive : (r < 0 ? Sign::Negative : Sign::Zero); }
-
-Sign oracle_cross(Point p1, Point q1, Point p2, Point q2) {
-    return rsign((q(q1.x) - q(p1.x)) * (q(q2.y) - q(p2.y)) - (q(q1.y) - q(p1.y)) * (q(q2.x) - q(p2.x)));
-}
+using oracle::Rational;
+Sign to_sign(int s) { return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero); }
 
 // Points from one of several adversarial families.
 class Points {
@@ -48,17 +43,9 @@ TEST(CrossSign, MatchesRationalsOnAdversarialInputs) {
     for (int i = 0; i < 50000; ++i) {
         const int f = i % 5;
         const Point a = pts.next(f), b = pts.next(f), c = pts.next(f), d = pts.next(f);
-        ASSERT_EQ(cross_sign(a, b, c, d), oracle_cross(a, b, c, d)) << i;
+        ASSERT_EQ(cross_sign(a, b, c, d), to_sign(oracle::cross_sign(a, b, c, d))) << i;
         if (!(a == b) && !(c == d)) {
-            const Sign want = [&] {
-                const Rational ax = q(b.x) - q(a.x), ay = q(b.y) - q(a.y);
-                const Rational bx = q(d.x) - q(c.x), by = q(d.y) - q(c.y);
-                const int ha = (ay > 0 || (ay == 0 && ax > 0)) ? 0 : 1;
-                const int hb = (by > 0 || (by == 0 && bx > 0)) ? 0 : 1;
-                if (ha != hb) return ha < hb ? Sign::Negative : Sign::Positive;
-                return rsign(bx * ay - by * ax);
-            }();
-            ASSERT_EQ(compare_direction(a, b, c, d), want) << i;
+            ASSERT_EQ(compare_direction(a, b, c, d), to_sign(oracle::direction_order(a, b, c, d))) << i;
         }
     }
 }
@@ -89,7 +76,6 @@ TEST(DirectedLine, OrdersCrossingsLikeRationalParameters) {
         const DirectedLine line(a, b);
         const Point hub{static_cast<double>(coord(rng)), static_cast<double>(coord(rng))};
         std::vector<std::pair<LineEvent, Rational>> events;
-        const Rational wx = q(b.x) - q(a.x), wy = q(b.y) - q(a.y);
         for (int k = 0; k < 12; ++k) {
             const Point e{static_cast<double>(coord(rng)), static_cast<double>(coord(rng))};
             if (to_int(orient2d(a, b, hub)) * to_int(orient2d(a, b, e)) >= 0) continue;  // must cross strictly
@@ -98,9 +84,7 @@ TEST(DirectedLine, OrdersCrossingsLikeRationalParameters) {
                 return x.first.crossing && compare_direction(hub, x.first.d, hub, e) == Sign::Zero;
             });
             if (overlaps) continue;
-            const Rational ex = q(e.x) - q(hub.x), ey = q(e.y) - q(hub.y);
-            const Rational t = ((q(hub.x) - q(a.x)) * ey - (q(hub.y) - q(a.y)) * ex) / (wx * ey - wy * ex);
-            events.push_back({LineEvent::cut(hub, e), t});
+            events.push_back({LineEvent::cut(hub, e), oracle::parameter_of_crossing(a, b, hub, e)});
         }
         for (int k = 0; k < 4; ++k) {
             const int s = coord(rng);
@@ -109,7 +93,7 @@ TEST(DirectedLine, OrdersCrossingsLikeRationalParameters) {
         }
         for (const auto& [x, tx] : events) {
             for (const auto& [y, ty] : events) {
-                ASSERT_EQ(line.compare(x, y), rsign(tx - ty)) << "trial " << trial;
+                ASSERT_EQ(line.compare(x, y), to_sign(oracle::sign_of(tx - ty))) << "trial " << trial;
                 ++compared;
             }
         }

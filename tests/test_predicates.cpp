@@ -1,10 +1,9 @@
-// The exact predicates against an independent oracle: boost's cpp_rational,
-// which represents every double exactly and computes the determinant with
-// no rounding at all.
+// The exact predicates against the independent oracles (oracles/exact.hpp):
+// exact integer arithmetic on the doubles' dyadic form, and GMP rationals,
+// which represent every double exactly and compute with no rounding at all.
 #include <gtest/gtest.h>
 
 #include <bit>
-#include <boost/multiprecision/cpp_int.hpp>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -16,33 +15,19 @@
 #include "dcel/geometry/exact_sum.hpp"
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/geometry/segments.hpp"
+#include "oracles/exact.hpp"
 
 namespace {
 
 using dcel::Point;
 using dcel::Sign;
-using Rational = boost::multiprecision::cpp_rational;
+using dcel::oracle::exact;
+using dcel::oracle::Rational;
 
-Rational exact(double v) { return Rational(v); }
-
-Sign rational_sign(const Rational& r) { return r > 0 ? Sign::Positive : (r < 0 ? Sign::Negative : Sign::Zero); }
-
-Sign oracle_orient(Point a, Point b, Point c) {
-    const Rational det = (exact(b.x) - exact(a.x)) * (exact(c.y) - exact(a.y)) -
-                         (exact(b.y) - exact(a.y)) * (exact(c.x) - exact(a.x));
-    return rational_sign(det);
-}
-
-// Angle order by the textbook definition, in rationals: half-plane first
-// (upper: dy > 0, or dy == 0 and dx > 0), then the cross product.
-Sign oracle_compare_angle(Point c, Point a, Point b) {
-    const Rational ax = exact(a.x) - exact(c.x), ay = exact(a.y) - exact(c.y);
-    const Rational bx = exact(b.x) - exact(c.x), by = exact(b.y) - exact(c.y);
-    const int ha = (ay > 0 || (ay == 0 && ax > 0)) ? 0 : 1;
-    const int hb = (by > 0 || (by == 0 && bx > 0)) ? 0 : 1;
-    if (ha != hb) return ha < hb ? Sign::Negative : Sign::Positive;
-    return rational_sign(bx * ay - by * ax);  // negative cross(a, b): a comes first
-}
+Sign to_sign(int s) { return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero); }
+Sign rational_sign(const Rational& r) { return to_sign(r.sign()); }
+Sign oracle_orient(Point a, Point b, Point c) { return to_sign(dcel::oracle::orientation(a, b, c)); }
+Sign oracle_compare_angle(Point c, Point a, Point b) { return to_sign(dcel::oracle::angle_order(c, a, b)); }
 
 TEST(Orient2d, ConventionCounterclockwiseIsPositive) {
     EXPECT_EQ(dcel::orient2d({0, 0}, {1, 0}, {0, 1}), Sign::Positive);
@@ -54,7 +39,10 @@ TEST(Orient2d, OracleItselfIsRight) {
     // Guard the oracle: a hand-computed determinant. (1,0)-(0,0) x (0,1)-(0,0) = 1.
     EXPECT_EQ(oracle_orient({0, 0}, {1, 0}, {0, 1}), Sign::Positive);
     EXPECT_EQ(exact(0.1) * 10 == 1, false);  // 0.1 is not exactly a tenth: the oracle sees the double
-    EXPECT_EQ(exact(0x1p-1074) * Rational(boost::multiprecision::cpp_int(1) << 1074), 1);
+    EXPECT_EQ(exact(0x1p-1074) * Rational(dcel::oracle::BigInt(1) << 1074), 1);
+    // Operands far apart in exponent take the arbitrary-precision path.
+    EXPECT_EQ(oracle_orient({0, 0}, {0x1p-1074, 0}, {0x1p1000, 0x1p-1074}), Sign::Positive);
+    EXPECT_EQ(oracle_orient({0x1p-1074, 0x1p-1074}, {0x1p1000, 0x1p1000}, {-0x1p1000, -0x1p1000}), Sign::Zero);
 }
 
 // Doubles of every kind: integers, fractions, huge, tiny, subnormal, signed zero.
@@ -214,19 +202,6 @@ TEST(ExactSum, MatchesRationalsAndRoundsCorrectly) {
     }
 }
 
-// Is r the double nearest to `expected` (ties to even), subnormals included?
-// Finite results only.
-bool is_nearest(double r, const Rational& expected) {
-    const Rational err = abs(expected - exact(r));
-    for (const double n : {std::nextafter(r, INFINITY), std::nextafter(r, -INFINITY)}) {
-        if (std::isinf(n)) continue;
-        const Rational other = abs(expected - exact(n));
-        if (other < err) return false;
-        if (other == err && (std::bit_cast<std::uint64_t>(r) & 1U) != 0) return false;  // a tie goes to even
-    }
-    return true;
-}
-
 // Sums near and below the least normal double, scaled by 2^-3 .. 2^3 before
 // rounding: the result must be rounded once. Found by fuzz/oracle: face_area
 // halved a rounded sum, and the conversion rounded to 53 bits before scaling
@@ -255,7 +230,7 @@ TEST(ExactSum, RoundsSubnormalAndScaledResultsOnce) {
         const int scale = std::uniform_int_distribution<int>(-3, 3)(rng);
         const Rational scaled = expected * Rational(std::ldexp(1.0, scale));  // exact: 2^scale is a double
         const double r = sum.to_double(scale);
-        ASSERT_TRUE(is_nearest(r, scaled)) << "scale " << scale << ": " << r;
+        ASSERT_TRUE(dcel::oracle::is_nearest_double(r, scaled)) << "scale " << scale << ": " << r;
     }
 }
 
@@ -287,15 +262,6 @@ TEST(ExactSum, CancelsExactly) {
     EXPECT_EQ(s.to_double(), 0.0);
 }
 
-Sign oracle_area_sign(const std::vector<Point>& poly) {
-    Rational twice = 0;
-    for (std::size_t i = 0; i < poly.size(); ++i) {
-        const Point a = poly[i], b = poly[(i + 1) % poly.size()];
-        twice += exact(a.x) * exact(b.y) - exact(a.y) * exact(b.x);
-    }
-    return rational_sign(twice);
-}
-
 TEST(PolygonArea, SignAgreesWithRationals) {
     std::mt19937_64 rng(3);
     for (int i = 0; i < 5000; ++i) {
@@ -313,41 +279,26 @@ TEST(PolygonArea, SignAgreesWithRationals) {
         auto visit = [&](auto&& f) {
             for (std::size_t k = 0; k < poly.size(); ++k) f(poly[k], poly[(k + 1) % poly.size()]);
         };
-        ASSERT_EQ(dcel::polygon_area_sign(visit), oracle_area_sign(poly)) << i;
+        ASSERT_EQ(dcel::polygon_area_sign(visit), rational_sign(dcel::oracle::twice_area(poly))) << i;
     }
 }
 
-// Contact by brute force in rationals: solve for the intersection parameters.
+// How the oracle's meeting (orientations and betweenness, exact) names a contact.
 dcel::Contact oracle_contact(Point a, Point b, Point c, Point d) {
     using dcel::Contact;
-    const Rational ax = exact(a.x), ay = exact(a.y), bx = exact(b.x), by = exact(b.y);
-    const Rational cx = exact(c.x), cy = exact(c.y), dx = exact(d.x), dy = exact(d.y);
-    const Rational rx = bx - ax, ry = by - ay, sx = dx - cx, sy = dy - cy;
-    const Rational denom = rx * sy - ry * sx;
-    const Rational qpx = cx - ax, qpy = cy - ay;
-    if (denom == 0) {
-        if (qpx * ry - qpy * rx != 0) return Contact::None;  // parallel, apart
-        // Collinear: project on r; parameters of c and d along a->b.
-        const Rational rr = rx * rx + ry * ry;
-        Rational t0 = (qpx * rx + qpy * ry) / rr;
-        Rational t1 = ((dx - ax) * rx + (dy - ay) * ry) / rr;
-        if (t0 > t1) std::swap(t0, t1);
-        const Rational lo = t0 > 0 ? t0 : Rational(0);
-        const Rational hi = t1 < 1 ? t1 : Rational(1);
-        if (lo > hi) return Contact::None;
-        return lo == hi ? Contact::SharedEndpoint : Contact::Overlap;
+    using dcel::oracle::Meeting;
+    switch (dcel::oracle::meeting(a, b, c, d)) {
+        case Meeting::None: return Contact::None;
+        case Meeting::SharedEndpoint: return Contact::SharedEndpoint;
+        case Meeting::Crossing: return Contact::Crossing;
+        case Meeting::Touch: return Contact::Touch;
+        case Meeting::Overlap:
+        case Meeting::Same: return Contact::Overlap;
     }
-    const Rational t = (qpx * sy - qpy * sx) / denom;  // along a->b
-    const Rational u = (qpx * ry - qpy * rx) / denom;  // along c->d
-    if (t < 0 || t > 1 || u < 0 || u > 1) return Contact::None;
-    const bool t_end = t == 0 || t == 1;
-    const bool u_end = u == 0 || u == 1;
-    if (t_end && u_end) return Contact::SharedEndpoint;
-    if (t_end || u_end) return Contact::Touch;
-    return Contact::Crossing;
+    return Contact::None;
 }
 
-TEST(SegmentContact, AgreesWithRationalBruteForce) {
+TEST(SegmentContact, AgreesWithExactBruteForce) {
     std::mt19937_64 rng(17);
     std::uniform_int_distribution<int> coord(0, 4);  // a tiny grid: many degenerate contacts
     int counts[5] = {};

@@ -1,5 +1,5 @@
 // Stabbing: hand-checked walks across the bundled map, then every walk on
-// random maps against the independent checks of support/stab_oracle.hpp.
+// random maps against the independent checks of oracles/stab_walk.hpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,14 +7,11 @@
 #include <string>
 
 #include "dcel/error.hpp"
-#include "dcel/geometry/predicates.hpp"
-#include "dcel/geometry/segments.hpp"
-#include "dcel/locate.hpp"
 #include "dcel/queries.hpp"
 #include "dcel/stab.hpp"
+#include "oracles/stab_walk.hpp"
 #include "support/edit_helpers.hpp"
 #include "support/random_maps.hpp"
-#include "support/stab_oracle.hpp"
 
 namespace dcel {
 
@@ -119,7 +116,7 @@ TEST(Stab, WalksOnRandomMapsMatchBruteForce) {
             const Point a{coord(), coord()};
             const Point b = k % 5 == 0 ? a : Point{coord(), coord()};
             const Pieces p = stab_segment(d, a, b);
-            const std::string problem = testing::check_walk(d, a, b, p);
+            const std::string problem = oracle::check_walk(d, a, b, p);
             ASSERT_EQ(problem, "") << "seed " << seed << " from (" << a.x << ", " << a.y << ") to (" << b.x << ", " << b.y
                                    << ")";
             ASSERT_EQ(stab_segment(d, b, a), reversed(p)) << "seed " << seed;

@@ -16,6 +16,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <string>
 
 #include "dcel/graph.hpp"
 #include "support/token_reader.hpp"
@@ -94,6 +96,25 @@ inline PlanarGraph decode_graph(TokenReader& in, GraphCaps caps) {
         }
     }
     return g;
+}
+
+// g as text that decode_graph reads back exactly: every coordinate with 17
+// significant digits (which round-trips any double, -0 included), a null
+// index as -1 (which decodes as the null id).
+inline std::string encode_graph(const PlanarGraph& g) {
+    std::string out = "points";
+    char buffer[64];
+    for (const Point& p : g.vertices) {
+        std::snprintf(buffer, sizeof buffer, " %.17g %.17g,", p.x, p.y);
+        out += buffer;
+    }
+    out += "\nedges";
+    for (const GraphEdge& e : g.edges) {
+        out += e.u.is_null() ? " -1" : " " + std::to_string(e.u.index());
+        out += e.v.is_null() ? " -1," : " " + std::to_string(e.v.index()) + ",";
+    }
+    out += "\n";
+    return out;
 }
 
 }  // namespace dcel::fuzz

@@ -2,14 +2,14 @@
 // map answers exactly as the scan does (at grid points, which hit vertices,
 // edges and faces), the scan's faces agree with build() placing the point,
 // and every stabbing walk passes the brute-force checks of
-// tests/support/stab_oracle.hpp.
+// tests/oracles/stab_walk.hpp.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>  // after gtest.h, which it needs
 
 #include "dcel/locate.hpp"
 #include "dcel/stab.hpp"
 #include "edit_steps.hpp"
-#include "support/stab_oracle.hpp"
+#include "oracles/stab_walk.hpp"
 
 namespace dcel::props {
 namespace {
@@ -59,7 +59,7 @@ RC_GTEST_PROP(StabProperties, prop_stab_matches_brute_force, ()) {
         rc::gen::pair(half_grid_point(), half_grid_point()));
     for (const auto& [a, b] : segments) {
         const std::vector<StabPiece> pieces = stab_segment(d, a, b);
-        const std::string problem = testing::check_walk(d, a, b, pieces);
+        const std::string problem = oracle::check_walk(d, a, b, pieces);
         if (!problem.empty()) RC_FAIL(problem);
     }
 }

@@ -6,11 +6,16 @@
 #include <optional>
 #include <vector>
 
-#include "support/exact_oracle.hpp"
-#include "support/union_find.hpp"
+#include "oracles/exact.hpp"
+#include "oracles/union_find.hpp"
 
 namespace dcel::props::planted {
 namespace {
+
+using oracle::angle_order;
+using oracle::component_labels;
+using oracle::Rational;
+using oracle::twice_area;
 
 using check::FacesAnswer;
 
@@ -156,7 +161,7 @@ DcelDump dump(const PlanarGraph& g, Nesting nesting) {
         std::optional<std::size_t> best;
         for (std::size_t c = 0; c < cycles.size(); ++c) {
             if (!face_of_cycle[c] || component[origin(g, cycles[c].front())] == component[v]) continue;
-            if (!strictly_inside(g.vertices[v], ring_points(g, cycles[c]))) continue;
+            if (oracle::winding_number(g.vertices[v], ring_points(g, cycles[c])) == 0) continue;
             const bool better = !best || (nesting == Nesting::Innermost ? area[c] < area[*best] : area[c] > area[*best]);
             if (better) best = c;
         }

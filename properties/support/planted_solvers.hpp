@@ -2,7 +2,7 @@
 // four with a textbook bug each, to show that the in-process checking helpers
 // (dcel/testing/check_testing.hpp) catch what they should. None of them uses
 // the library's algorithms: angular order, areas and point-in-polygon come
-// from the independent exact oracles (tests/support/exact_oracle.hpp).
+// from the independent exact oracles (tests/oracles/).
 //
 //   right_faces / right_dump   exact angular order, next(u->v) = the half-edge
 //                              leaving v clockwise after v->u; each hole in the

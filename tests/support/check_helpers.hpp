@@ -12,6 +12,7 @@
 #include "dcel/check/compare.hpp"
 #include "dcel/dcel.hpp"
 #include "dcel/dump.hpp"
+#include "oracles/shapes.hpp"
 
 namespace dcel::testing {
 
@@ -127,14 +128,7 @@ inline const check::Difference* find_kind(const check::Report& r, check::Differe
     return nullptr;
 }
 
-// The lexicographically smallest rotation, to compare cycles as cycles.
-inline std::vector<Index> rotation_canonical(std::vector<Index> c) {
-    std::vector<Index> best = c;
-    for (std::size_t k = 1; k < c.size(); ++k) {
-        std::rotate(c.begin(), c.begin() + 1, c.end());
-        best = std::min(best, c);
-    }
-    return best;
-}
+// A cycle's canonical form (its smallest rotation), to compare cycles as cycles.
+using oracle::canonical;
 
 }  // namespace dcel::testing

@@ -10,10 +10,6 @@
 namespace dcel::gen {
 namespace {
 
-// Integers below 2^62 in magnitude: differences stay below 2^63 and products
-// of differences below 2^126, so __int128 is exact.
-bool small_integer(double v) { return std::fabs(v) < 0x1p62 && std::trunc(v) == v; }
-
 struct Box {
     double x0, x1, y0, y1;
 };
@@ -24,24 +20,10 @@ std::string point_text(Point p) { return "(" + std::to_string(p.x) + ", " + std:
 
 }  // namespace
 
-Sign exact_orient(Point a, Point b, Point c) {
-    if (small_integer(a.x) && small_integer(a.y) && small_integer(b.x) && small_integer(b.y) && small_integer(c.x) &&
-        small_integer(c.y)) {
-        // __extension__ (no -Wpedantic warning) takes the typedef form only.
-        __extension__ typedef __int128 Wide;  // NOLINT(modernize-use-using)
-        const Wide acx = static_cast<Wide>(static_cast<std::int64_t>(a.x) - static_cast<std::int64_t>(c.x));
-        const Wide acy = static_cast<Wide>(static_cast<std::int64_t>(a.y) - static_cast<std::int64_t>(c.y));
-        const Wide bcx = static_cast<Wide>(static_cast<std::int64_t>(b.x) - static_cast<std::int64_t>(c.x));
-        const Wide bcy = static_cast<Wide>(static_cast<std::int64_t>(b.y) - static_cast<std::int64_t>(c.y));
-        return sign_of(acx * bcy - acy * bcx);
-    }
-    return orient2d_exact(a, b, c);
-}
-
 bool on_closed_segment(Point a, Point b, Point p) {
     const Box bx = box(a, b);
     if (p.x < bx.x0 || p.x > bx.x1 || p.y < bx.y0 || p.y > bx.y1) return false;
-    return exact_orient(a, b, p) == Sign::Zero;
+    return orient2d(a, b, p) == Sign::Zero;
 }
 
 bool segments_conflict(Point a, Point b, Point c, Point d) {
@@ -54,15 +36,15 @@ bool segments_conflict(Point a, Point b, Point c, Point d) {
         const Point w = (ac || ad) ? a : b;
         const Point x = (ac || ad) ? b : a;
         const Point y = (ac || bc) ? d : c;
-        if (exact_orient(w, x, y) != Sign::Zero) return false;
+        if (orient2d(w, x, y) != Sign::Zero) return false;
         const bool x_after = w.x != x.x ? x.x > w.x : x.y > w.y;
         const bool y_after = w.x != y.x ? y.x > w.x : y.y > w.y;
         return x_after == y_after;
     }
-    const int o1 = to_int(exact_orient(a, b, c));
-    const int o2 = to_int(exact_orient(a, b, d));
-    const int o3 = to_int(exact_orient(c, d, a));
-    const int o4 = to_int(exact_orient(c, d, b));
+    const int o1 = to_int(orient2d(a, b, c));
+    const int o2 = to_int(orient2d(a, b, d));
+    const int o3 = to_int(orient2d(c, d, a));
+    const int o4 = to_int(orient2d(c, d, b));
     if (o1 * o2 < 0 && o3 * o4 < 0) return true;
     return (o1 == 0 && on_closed_segment(a, b, c)) || (o2 == 0 && on_closed_segment(a, b, d)) ||
            (o3 == 0 && on_closed_segment(c, d, a)) || (o4 == 0 && on_closed_segment(c, d, b));

@@ -1,21 +1,18 @@
 // Brute-force validity checks for generated graphs, independent of build()
 // and its plane sweep: every pair of edges and every vertex-edge pair is
-// tested directly, O(V E + E^2). Orientation signs are exact: 128-bit integer
-// arithmetic when the coordinates are small integers (the common case, and
-// fast), ExactSum otherwise. The library's filtered orient2d is not used, so a
-// bug in its filter cannot hide here.
+// tested directly, O(V E + E^2), with the library's exact orient2d. The
+// generated graphs are checked again by the independent oracles
+// (tests/oracles/, used by the properties and the fuzz harnesses), so a bug
+// in orient2d that let a generator accept a bad graph would show there.
 #pragma once
 
 #include <optional>
 #include <string>
 
 #include "dcel/geometry/point.hpp"
-#include "dcel/geometry/sign.hpp"
 #include "dcel/graph.hpp"
 
 namespace dcel::gen {
-
-[[nodiscard]] Sign exact_orient(Point a, Point b, Point c);
 
 // p on the closed segment ab (a != b).
 [[nodiscard]] bool on_closed_segment(Point a, Point b, Point p);

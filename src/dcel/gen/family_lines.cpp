@@ -9,6 +9,7 @@
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/families.hpp"
 #include "dcel/gen/graph_builder.hpp"
+#include "dcel/geometry/predicates.hpp"
 
 namespace dcel::gen::detail {
 namespace {
@@ -95,11 +96,11 @@ PlanarGraph star(Rng& rng, std::size_t n) {
             const Point a = g.vertices[p.index()];
             const Point c = g.vertices[q.index()];
             if (upper(a) != upper(c)) return upper(a);
-            return exact_orient(o, a, c) == Sign::Positive;
+            return orient2d(o, a, c) == Sign::Positive;
         });
         for (std::size_t i = 0; i < tips.size(); ++i) {
             const VertexId a = tips[i], c = tips[(i + 1) % tips.size()];
-            if (exact_orient(o, g.vertices[a.index()], g.vertices[c.index()]) == Sign::Positive && rng.chance(3, 4)) {
+            if (orient2d(o, g.vertices[a.index()], g.vertices[c.index()]) == Sign::Positive && rng.chance(3, 4)) {
                 g.edges.push_back({a, c});
             }
         }

@@ -8,6 +8,7 @@
 
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/families.hpp"
+#include "dcel/geometry/predicates.hpp"
 
 namespace dcel::gen::detail {
 namespace {
@@ -78,11 +79,11 @@ std::vector<GraphEdge> sweep_triangulation(const std::vector<Point>& p) {
     auto v = [](Index i) { return VertexId(i); };
     for (const Index q : lexicographic_order(p)) {
         if (!upper.empty()) edges.push_back({v(upper.back()), v(q)});  // the previous point ends both chains
-        while (upper.size() >= 2 && exact_orient(p[upper[upper.size() - 2]], p[upper.back()], p[q]) == Sign::Positive) {
+        while (upper.size() >= 2 && orient2d(p[upper[upper.size() - 2]], p[upper.back()], p[q]) == Sign::Positive) {
             upper.pop_back();
             edges.push_back({v(upper.back()), v(q)});
         }
-        while (lower.size() >= 2 && exact_orient(p[lower[lower.size() - 2]], p[lower.back()], p[q]) == Sign::Negative) {
+        while (lower.size() >= 2 && orient2d(p[lower[lower.size() - 2]], p[lower.back()], p[q]) == Sign::Negative) {
             lower.pop_back();
             edges.push_back({v(lower.back()), v(q)});
         }
@@ -106,7 +107,7 @@ std::vector<GraphEdge> monotone_polygon(const std::vector<Point>& p) {
     const Point f = p[order.front()], l = p[order.back()];
     Sign upper_side = Sign::Zero;
     for (const Index i : order) {
-        const Sign s = exact_orient(f, l, p[i]);
+        const Sign s = orient2d(f, l, p[i]);
         if (s != Sign::Zero) upper_side = s;
     }
     auto chain = [&](bool upper) {
@@ -114,7 +115,7 @@ std::vector<GraphEdge> monotone_polygon(const std::vector<Point>& p) {
         for (std::size_t k = 1; k < order.size(); ++k) {
             const Index i = order[k];
             const bool end = k + 1 == order.size();
-            const bool in_upper = upper_side != Sign::Zero && exact_orient(f, l, p[i]) == upper_side;
+            const bool in_upper = upper_side != Sign::Zero && orient2d(f, l, p[i]) == upper_side;
             if (!end && in_upper != upper) continue;
             edges.push_back({VertexId(previous), VertexId(i)});
             previous = i;

@@ -10,6 +10,7 @@
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/families.hpp"
 #include "dcel/gen/graph_builder.hpp"
+#include "dcel/geometry/predicates.hpp"
 
 namespace dcel::gen::detail {
 namespace {
@@ -247,7 +248,7 @@ PlanarGraph components(Rng& rng, std::size_t n) {
             }
             case 2: {
                 const Point p = inner(), q = inner(), s = inner();
-                if (exact_orient(p, q, s) == Sign::Zero) break;
+                if (orient2d(p, q, s) == Sign::Zero) break;
                 (void)b.add_segment(p, q);
                 (void)b.add_segment(q, s);
                 (void)b.add_segment(s, p);

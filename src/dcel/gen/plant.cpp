@@ -8,6 +8,7 @@
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/generate.hpp"
 #include "dcel/gen/rng.hpp"
+#include "dcel/geometry/predicates.hpp"
 
 namespace dcel::gen {
 namespace {
@@ -38,8 +39,8 @@ std::optional<Point> interior_point(Point a, Point b, Rng& rng) {
 }
 
 bool proper_crossing(Point p, Point q, Point a, Point b) {
-    return to_int(exact_orient(p, q, a)) * to_int(exact_orient(p, q, b)) < 0 &&
-           to_int(exact_orient(a, b, p)) * to_int(exact_orient(a, b, q)) < 0;
+    return to_int(orient2d(p, q, a)) * to_int(orient2d(p, q, b)) < 0 &&
+           to_int(orient2d(a, b, p)) * to_int(orient2d(a, b, q)) < 0;
 }
 
 // Apply the attempt and check that it adds exactly the contacts wanted: the
@@ -68,8 +69,8 @@ std::optional<PlanarGraph> try_attempt(const PlanarGraph& g, std::size_t e, cons
         }
         // The contact must be of the kind asked for: rounding may have
         // turned an overlap into a touch, or a crossing into a touch.
-        const bool collinear = exact_orient(pt(target.u), pt(target.v), p) == Sign::Zero &&
-                               exact_orient(pt(target.u), pt(target.v), q) == Sign::Zero;
+        const bool collinear = orient2d(pt(target.u), pt(target.v), p) == Sign::Zero &&
+                               orient2d(pt(target.u), pt(target.v), q) == Sign::Zero;
         if (d == Defect::Crossing && !proper_crossing(p, q, pt(target.u), pt(target.v))) return std::nullopt;
         if ((d == Defect::Overlap) != collinear) return std::nullopt;
         // Old vertices on a new edge: only e's own endpoints (an overlap may

@@ -1,5 +1,8 @@
-// Union-find over vertex ids: the properties' own count of connected
-// components (isolated vertices included), independent of build().
+// Union-find over vertex ids: the oracles' own count of connected
+// components (isolated vertices included), independent of build(). The
+// generators' Kruskal forest (src/dcel/gen/family_random.cpp) stays a
+// separate copy on purpose: this one checks what that one builds (a tree
+// family's edges + components == vertices).
 #pragma once
 
 #include <cstddef>
@@ -8,7 +11,7 @@
 
 #include "dcel/graph.hpp"
 
-namespace dcel::props {
+namespace dcel::oracle {
 
 class UnionFind {
 public:
@@ -32,11 +35,11 @@ private:
     return label;
 }
 
-[[nodiscard]] inline std::size_t count_components_by_union_find(const PlanarGraph& g) {
+[[nodiscard]] inline std::size_t count_components(const PlanarGraph& g) {
     const std::vector<Index> label = component_labels(g);
     std::size_t roots = 0;
     for (Index v = 0; v < label.size(); ++v) roots += label[v] == v;
     return roots;
 }
 
-}  // namespace dcel::props
+}  // namespace dcel::oracle
