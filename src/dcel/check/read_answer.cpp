@@ -184,7 +184,7 @@ private:
         out_.by_points = other.out_.by_points;
     }
     // Ids or coordinates: the first ring point decides for the whole answer.
-    void choose(JsonReader& r, bool points) {
+    void choose(const JsonReader& r, bool points) {
         if (!decided_) {
             decided_ = true;
             out_.by_points = points;
