@@ -1,5 +1,7 @@
 #include "dcel/format.hpp"
 
+#include "dcel/core/utf8.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -43,41 +45,6 @@ namespace {
 
 constexpr char kHex[] = "0123456789ABCDEF";
 
-// The length (1-4) of the well-formed UTF-8 sequence at s[i] (Unicode table
-// 3-7: no overlongs, no surrogates, nothing above U+10FFFF) and its code
-// point, or 0.
-std::size_t utf8_sequence(std::string_view s, std::size_t i, char32_t& cp) {
-    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-    const unsigned char b0 = byte(i);
-    if (b0 < 0x80) {
-        cp = b0;
-        return 1;
-    }
-    std::size_t len = 0;
-    unsigned char lo = 0x80;
-    unsigned char hi = 0xBF;
-    if (b0 >= 0xC2 && b0 <= 0xDF) {
-        len = 2;
-    } else if (b0 >= 0xE0 && b0 <= 0xEF) {
-        len = 3;
-        if (b0 == 0xE0) lo = 0xA0;
-        if (b0 == 0xED) hi = 0x9F;
-    } else if (b0 >= 0xF0 && b0 <= 0xF4) {
-        len = 4;
-        if (b0 == 0xF0) lo = 0x90;
-        if (b0 == 0xF4) hi = 0x8F;
-    } else {
-        return 0;
-    }
-    if (s.size() - i < len || byte(i + 1) < lo || byte(i + 1) > hi) return 0;
-    for (std::size_t k = 2; k < len; ++k) {
-        if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
-    }
-    cp = b0 & (0xFFU >> (len + 1));
-    for (std::size_t k = 1; k < len; ++k) cp = (cp << 6) | (byte(i + k) & 0x3FU);
-    return len;
-}
-
 // Code points that must not reach a terminal as they are.
 bool is_unsafe(char32_t cp) {
     return cp < 0x20 || (cp >= 0x7F && cp <= 0x9F) || cp == 0x200E || cp == 0x200F || (cp >= 0x2028 && cp <= 0x202E) ||
@@ -88,7 +55,7 @@ void append_escaped(std::string& out, std::string_view text, std::size_t max_byt
     std::size_t i = 0;
     while (i < text.size()) {
         char32_t cp = 0;
-        const std::size_t len = utf8_sequence(text, i, cp);
+        const std::size_t len = detail::utf8_sequence(text, i, &cp);
         if (i + std::max<std::size_t>(len, 1) > max_bytes) {
             out += "...";
             return;
@@ -139,7 +106,7 @@ std::string quote_for_message(std::string_view text, std::size_t max_bytes) {
 bool needs_escaping(std::string_view text) {
     for (std::size_t i = 0; i < text.size();) {
         char32_t cp = 0;
-        const std::size_t len = utf8_sequence(text, i, cp);
+        const std::size_t len = detail::utf8_sequence(text, i, &cp);
         if (len == 0 || is_unsafe(cp)) return true;
         i += len;
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <system_error>
 #include "dcel/contracts.hpp"
+#include "dcel/core/utf8.hpp"
 
 #include "dcel/format.hpp"
 #include "dcel/io/decimal.hpp"
@@ -40,44 +41,6 @@ std::string code_point_name(std::uint32_t cp) {
     } while (cp != 0 || n < 4);
     while (n > 0) s += buf[--n];
     return s;
-}
-
-// The length (1-4) of the well-formed UTF-8 sequence at s[i] (Unicode table
-// 3-7: no overlongs, no surrogates, nothing above U+10FFFF), or 0.
-std::size_t utf8_length(std::string_view s, std::size_t i, std::uint32_t* code_point = nullptr) {
-    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
-    const unsigned char b0 = byte(i);
-    if (b0 < 0x80) {
-        if (code_point != nullptr) *code_point = b0;
-        return 1;
-    }
-    std::size_t len = 0;
-    unsigned char lo = 0x80, hi = 0xBF;
-    if (b0 >= 0xC2 && b0 <= 0xDF) {
-        len = 2;
-    } else if (b0 >= 0xE0 && b0 <= 0xEF) {
-        len = 3;
-        if (b0 == 0xE0) lo = 0xA0;
-        if (b0 == 0xED) hi = 0x9F;
-    } else if (b0 >= 0xF0 && b0 <= 0xF4) {
-        len = 4;
-        if (b0 == 0xF0) lo = 0x90;
-        if (b0 == 0xF4) hi = 0x8F;
-    } else {
-        return 0;
-    }
-    if (s.size() - i < len) return 0;
-    const unsigned char b1 = byte(i + 1);
-    if (b1 < lo || b1 > hi) return 0;
-    for (std::size_t k = 2; k < len; ++k) {
-        if (byte(i + k) < 0x80 || byte(i + k) > 0xBF) return 0;
-    }
-    if (code_point != nullptr) {
-        std::uint32_t cp = b0 & (0xFFU >> (len + 1));
-        for (std::size_t k = 1; k < len; ++k) cp = (cp << 6) | (byte(i + k) & 0x3FU);
-        *code_point = cp;
-    }
-    return len;
 }
 
 void append_utf8(std::string& out, std::uint32_t cp) {
@@ -168,8 +131,8 @@ std::string describe_char(std::string_view s, std::size_t i) {
     if (c == '\'') return "character \"'\"";
     if (c >= 0x20 && c < 0x7F) return std::string("character '") + static_cast<char>(c) + "'";
     if (c < 0x80) return "control character " + code_point_name(c);
-    std::uint32_t cp = 0;
-    if (utf8_length(s, i, &cp) != 0) return "character " + code_point_name(cp);
+    char32_t cp = 0;
+    if (detail::utf8_sequence(s, i, &cp) != 0) return "character " + code_point_name(cp);
     return "byte 0x" + hex_byte(c) + " (not valid UTF-8)";
 }
 
@@ -529,7 +492,7 @@ std::size_t JsonReader::scan_string(bool& escaped) {
             fail_syntax(p, "control character " + code_point_name(c) + " in a string: escape it as " + fix +
                                (c == '\n' ? " (or is a closing '\"' missing?)" : ""));
         }
-        const std::size_t len = utf8_length(text_, p);
+        const std::size_t len = detail::utf8_sequence(text_, p);
         if (len == 0) {
             fail_syntax(p, "invalid UTF-8 in a string (byte 0x" + hex_byte(c) + "): the document must be UTF-8");
         }
