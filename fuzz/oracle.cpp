@@ -5,7 +5,8 @@
 // Compares the DCEL's faces with the reference DCEL's (every cycle, every
 // hole and isolated vertex in its face), and its boundary cycles with the
 // faces of Boost's planar_face_traversal over a rotation system sorted by
-// the oracles' own exact comparator (Boost skips isolated vertices and
+// the oracles' own exact comparator, once per input for both and for
+// faces_around (oracles/rotations.hpp). (Boost skips isolated vertices and
 // reports each component's outer walk as a face of its own, which is
 // exactly a hole cycle, so cycles are compared, not faces). Also: on small
 // graphs, Boyer-Myrvold calls the graph planar and its embedding has as
@@ -49,6 +50,7 @@
 #include "oracles/brute_force.hpp"
 #include "oracles/exact.hpp"
 #include "oracles/reference_dcel.hpp"
+#include "oracles/rotations.hpp"
 #include "oracles/stab_walk.hpp"
 #include "oracles/union_find.hpp"
 #include "support/dcel_views.hpp"
@@ -80,16 +82,25 @@ void check_validity(const GraphInput& in, const oracle::Defects& defects) {
                "the generator made an invalid graph: " << describe(in) << ": " << oracle::describe(defects.kinds()));
 }
 
-void check_faces(const Dcel& d, const PlanarGraph& g) {
+// The graph's exact rotation system, sorted once for every check that needs it.
+struct Embedded {
+    oracle::HalfEdgeGraph half_edges;
+    oracle::Rotations rotations;
+    explicit Embedded(const PlanarGraph& g)
+        : half_edges(oracle::half_edges_of(g)), rotations(oracle::rotation_system(half_edges)) {}
+};
+
+void check_faces(const Dcel& d, const Embedded& e) {
     const std::vector<oracle::FaceShape> ours = testing::face_shapes(d);
-    const std::vector<oracle::FaceShape> reference = oracle::reference_faces(g);
+    const std::vector<oracle::FaceShape> reference = oracle::face_shapes(e.half_edges,
+                                                                         oracle::reference_dcel(e.half_edges, e.rotations));
     FUZZ_CHECK(ours == reference,
                "the DCEL has " << ours.size() << " faces, the reference DCEL " << reference.size() << "; they differ");
 }
 
-void check_cycles(const Dcel& d, const PlanarGraph& g) {
+void check_cycles(const Dcel& d, const PlanarGraph& g, const Embedded& e) {
     const std::vector<oracle::Cycle> ours = testing::dcel_cycles(d);
-    const std::vector<oracle::Cycle> boost = oracle::boost_face_cycles(g);
+    const std::vector<oracle::Cycle> boost = oracle::boost_face_cycles(g, e.rotations);
     FUZZ_CHECK(ours == boost,
                "the DCEL has " << ours.size() << " boundary cycles, Boost's traversal " << boost.size() << "; they differ");
     std::vector<oracle::Cycle> queried;
@@ -116,30 +127,38 @@ void check_euler(const Dcel& d, const PlanarGraph& g) {
 }
 
 // faces_around(v): the faces of v's outgoing half-edges in counterclockwise
-// order (the exact oracle's), starting with out(v).
-void check_faces_around(const Dcel& d) {
+// order (the exact rotation system's), starting with out(v). A DCEL vertex
+// keeps its input id, and its half-edges are found by their far ends.
+void check_faces_around(const Dcel& d, const Embedded& e) {
     std::vector<std::vector<HalfEdgeId>> outgoing(d.num_vertices());
     for (Index i = 0; i < d.num_half_edges(); ++i) outgoing[d.origin(HalfEdgeId(i)).index()].push_back(HalfEdgeId(i));
     for (Index i = 0; i < d.num_vertices(); ++i) {
         const VertexId v(i);
         const std::vector<FaceId> got = faces_around(d, v);
-        std::vector<HalfEdgeId>& ring = outgoing[i];
-        if (ring.empty()) {
+        const std::vector<HalfEdgeId>& mine = outgoing[i];
+        const std::vector<Index>& ring = e.rotations.ring[i];
+        if (mine.empty()) {
+            FUZZ_CHECK(ring.empty(), v.str() << " has no half-edges in the DCEL but " << ring.size() << " edges");
             FUZZ_CHECK(got.size() == 1, "isolated " << v.str() << " lies in " << got.size() << " faces");
             const std::vector<VertexId>& listed = d.isolated(got[0]);
             FUZZ_CHECK(std::find(listed.begin(), listed.end(), v) != listed.end(),
                        "faces_around(" << v.str() << ") names a face that does not list it");
             continue;
         }
-        const Point centre = d.point(v);
-        std::sort(ring.begin(), ring.end(), [&](HalfEdgeId a, HalfEdgeId b) {
-            return oracle::angle_order(centre, d.point(d.target(a)), d.point(d.target(b))) < 0;
-        });
-        const auto start = std::find(ring.begin(), ring.end(), d.out(v));
-        FUZZ_CHECK(start != ring.end(), "out(" << v.str() << ") does not leave it");
-        std::rotate(ring.begin(), start, ring.end());
+        FUZZ_CHECK(mine.size() == ring.size(), v.str()
+                                                   << " has " << mine.size() << " half-edges, " << ring.size() << " edges");
+        std::vector<HalfEdgeId> ordered;
+        for (const Index h : ring) {
+            const Index far = e.half_edges.origin[e.half_edges.twin[h]];
+            const auto it = std::find_if(mine.begin(), mine.end(), [&](HalfEdgeId m) { return d.target(m).index() == far; });
+            FUZZ_CHECK(it != mine.end(), "no half-edge from " << v.str() << " to v" << far);
+            ordered.push_back(*it);
+        }
+        const auto start = std::find(ordered.begin(), ordered.end(), d.out(v));
+        FUZZ_CHECK(start != ordered.end(), "out(" << v.str() << ") does not leave it");
+        std::rotate(ordered.begin(), start, ordered.end());
         std::vector<FaceId> expected;
-        for (const HalfEdgeId h : ring) expected.push_back(d.face(h));
+        for (const HalfEdgeId h : ordered) expected.push_back(d.face(h));
         FUZZ_CHECK(got == expected, "faces_around(" << v.str() << ") disagrees with the exact angular order");
     }
 }
@@ -242,10 +261,11 @@ bool check(const GraphInput& in) {
     }
     const CheckResult v = validate(d);
     FUZZ_CHECK(!v, "validate rejects a built DCEL: [" << to_string(v->invariant) << "] " << v->message);
-    check_faces(d, g);
-    check_cycles(d, g);
+    const Embedded embedded(g);
+    check_faces(d, embedded);
+    check_cycles(d, g, embedded);
     check_euler(d, g);
-    check_faces_around(d);
+    check_faces_around(d, embedded);
     check_neighbours(d);
     check_areas(d);
     check_location_and_stabbing(d, g);

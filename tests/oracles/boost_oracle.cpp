@@ -8,7 +8,7 @@
 #include <boost/property_map/property_map.hpp>
 #include <utility>
 
-#include "oracles/exact.hpp"
+#include "oracles/reference_dcel.hpp"
 
 namespace dcel::oracle {
 namespace {
@@ -33,6 +33,16 @@ BoostGraph to_boost(std::size_t n, const std::vector<std::pair<Index, Index>>& e
         boost::put(boost::edge_index, b, e, static_cast<int>(k));
     }
     return b;
+}
+
+// Each edge's descriptor by its index, read once the graph is complete (a
+// descriptor points into the edge list, which moves as edges are added).
+std::vector<BoostEdge> descriptors(const BoostGraph& b) {
+    std::vector<BoostEdge> out(boost::num_edges(b));
+    for (auto [it, end] = boost::edges(b); it != end; ++it) {
+        out[static_cast<std::size_t>(boost::get(boost::edge_index, b, *it))] = *it;
+    }
+    return out;
 }
 
 std::vector<std::pair<Index, Index>> edge_pairs(const PlanarGraph& g) {
@@ -71,25 +81,22 @@ struct FaceCounter : boost::planar_face_traversal_visitor {
 }  // namespace
 
 std::vector<Cycle> boost_face_cycles(const PlanarGraph& g) {
-    BoostGraph b = to_boost(g.vertices.size(), edge_pairs(g));
+    return boost_face_cycles(g, rotation_system(half_edges_of(g)));
+}
+
+std::vector<Cycle> boost_face_cycles(const PlanarGraph& g, const Rotations& rotations) {
+    const BoostGraph b = to_boost(g.vertices.size(), edge_pairs(g));
+    const std::vector<BoostEdge> edges = descriptors(b);
+    // Clockwise: each counterclockwise ring reversed; half-edge e is edge e / 2.
     Embedding embedding(g.vertices.size());
-    const ExactPoints geometry(g.vertices);
     for (std::size_t v = 0; v < g.vertices.size(); ++v) {
-        auto other = [&](const BoostEdge& e) {
-            const auto s = boost::source(e, b), t = boost::target(e, b);
-            return static_cast<Index>(s == v ? t : s);
-        };
-        auto [it, end] = boost::out_edges(v, b);
-        std::vector<BoostEdge> ring(it, end);
-        // Clockwise: the reverse of the counterclockwise angle order.
-        std::sort(ring.begin(), ring.end(), [&](const BoostEdge& x, const BoostEdge& y) {
-            return geometry.angle_order(static_cast<Index>(v), other(x), other(y)) > 0;
-        });
-        embedding[v] = std::move(ring);
+        const std::vector<Index>& ring = rotations.ring[v];
+        for (auto e = ring.rbegin(); e != ring.rend(); ++e) embedding[v].push_back(edges[*e / 2]);
     }
     FaceWalks walks;
     boost::planar_face_traversal(b, EmbeddingMap(embedding.begin(), boost::get(boost::vertex_index, b)), walks);
     std::vector<Cycle> cycles;
+    cycles.reserve(walks.faces.size());
     for (const Cycle& c : walks.faces) cycles.push_back(canonical(c));
     std::sort(cycles.begin(), cycles.end());
     return cycles;

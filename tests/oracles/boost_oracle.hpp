@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "dcel/graph.hpp"
+#include "oracles/rotations.hpp"
 #include "oracles/shapes.hpp"
 
 namespace dcel::oracle {
@@ -27,6 +28,8 @@ namespace dcel::oracle {
 // Boost's planar_face_traversal over our clockwise rotation system;
 // canonical, sorted.
 [[nodiscard]] std::vector<Cycle> boost_face_cycles(const PlanarGraph& g);
+// The same over g's rotation system sorted already: rotation_system(half_edges_of(g)).
+[[nodiscard]] std::vector<Cycle> boost_face_cycles(const PlanarGraph& g, const Rotations& rotations);
 
 struct BoyerMyrvoldAnswer {
     bool planar = false;

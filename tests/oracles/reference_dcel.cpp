@@ -10,28 +10,6 @@
 namespace dcel::oracle {
 namespace {
 
-// Every vertex's outgoing half-edges, counterclockwise from east, and where
-// each half-edge sits in its vertex's ring.
-struct Rotations {
-    std::vector<std::vector<Index>> ring;
-    std::vector<Index> position;
-};
-
-Rotations rotation_system(const HalfEdgeGraph& h) {
-    Rotations r;
-    r.ring.resize(h.points.size());
-    r.position.resize(h.origin.size());
-    for (Index e = 0; e < h.origin.size(); ++e) r.ring[h.origin[e]].push_back(e);
-    const ExactPoints geometry(h.points);
-    for (Index v = 0; v < r.ring.size(); ++v) {
-        auto head = [&](Index e) { return h.origin[h.twin[e]]; };
-        std::sort(r.ring[v].begin(), r.ring[v].end(),
-                  [&](Index a, Index b) { return geometry.angle_order(v, head(a), head(b)) < 0; });
-        for (Index k = 0; k < r.ring[v].size(); ++k) r.position[r.ring[v][k]] = k;
-    }
-    return r;
-}
-
 // next(e): the half-edge just clockwise of twin(e) around twin(e)'s origin.
 std::vector<Index> next_from_rotations(const HalfEdgeGraph& h, const Rotations& r) {
     std::vector<Index> next(h.origin.size());
@@ -135,9 +113,11 @@ HalfEdgeGraph half_edges_of(const PlanarGraph& g) {
     return h;
 }
 
-ReferenceDcel reference_dcel(const HalfEdgeGraph& h) {
+ReferenceDcel reference_dcel(const HalfEdgeGraph& h) { return reference_dcel(h, rotation_system(h)); }
+
+ReferenceDcel reference_dcel(const HalfEdgeGraph& h, const Rotations& rotations) {
     ReferenceDcel r;
-    r.next = next_from_rotations(h, rotation_system(h));
+    r.next = next_from_rotations(h, rotations);
     walk_cycles(h, r);
     number_faces(r);
     place_components(h, r);

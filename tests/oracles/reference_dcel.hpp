@@ -3,7 +3,7 @@
 // with the library (no lex order, rank graph, sweep or filtered predicate):
 //   - next(u->v) is the half-edge leaving v just clockwise of v->u, in the
 //     exact angular order (exact.hpp), found by sorting each vertex's
-//     half-edges once;
+//     half-edges once (rotations.hpp);
 //   - the cycles of next, with their exact doubled signed areas;
 //   - the faces: the unbounded one, plus one per counterclockwise cycle;
 //   - every other cycle (a component's clockwise outer boundary) and every
@@ -18,17 +18,11 @@
 #include "dcel/geometry/point.hpp"
 #include "dcel/graph.hpp"
 #include "oracles/exact.hpp"
+#include "oracles/rotations.hpp"
 #include "oracles/shapes.hpp"
 
 namespace dcel::oracle {
 
-// Half-edges by their origins and twins, over a list of points: a dump's
-// own numbering, or a graph's (half-edge 2k runs u->v of edge k, 2k+1 back).
-struct HalfEdgeGraph {
-    std::vector<Point> points;
-    std::vector<Index> origin;  // per half-edge
-    std::vector<Index> twin;    // per half-edge: a fixed-point-free involution
-};
 [[nodiscard]] HalfEdgeGraph half_edges_of(const PlanarGraph& g);
 
 struct ReferenceDcel {
@@ -44,6 +38,8 @@ struct ReferenceDcel {
 };
 
 [[nodiscard]] ReferenceDcel reference_dcel(const HalfEdgeGraph& h);
+// The same, from h's rotation system, when the caller has sorted it already.
+[[nodiscard]] ReferenceDcel reference_dcel(const HalfEdgeGraph& h, const Rotations& rotations);
 [[nodiscard]] ReferenceDcel reference_dcel(const PlanarGraph& g);
 
 // The faces as vertex-id shapes (shapes.hpp), to compare with a DCEL's.
