@@ -8,6 +8,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <new>
 #include <string>
 #include <system_error>
@@ -78,13 +79,20 @@ locale_t c_locale() {
 std::from_chars_result parse_double_strtod(const char* first, const char* last, double& value) {
     const char* const end = match_end(first, last);
     if (end == first) return {first, std::errc::invalid_argument};
+    const bool negative = *first == '-';
+    if (starts_with_word(first + (negative ? 1 : 0), end, "nan")) {
+        // from_chars reads nan(chars) but ignores the chars; glibc's strtod
+        // would put them in the payload (nan(1) as 0x7ff8000000000001).
+        value = std::copysign(std::numeric_limits<double>::quiet_NaN(), negative ? -1.0 : 1.0);
+        return {end, std::errc()};
+    }
     const std::string token(first, end);  // bounded and NUL-terminated, unlike the input
     errno = 0;
     const double v = strtod_l(token.c_str(), nullptr, c_locale());  // reads all of token: it matched the grammar
     const bool range_error = errno == ERANGE;
     // glibc sets ERANGE for overflow (+-HUGE_VAL) and for underflow; a
     // nonzero subnormal result is still the correctly rounded value.
-    if (std::isinf(v) && !starts_with_word(first + (*first == '-' ? 1 : 0), end, "inf")) {
+    if (std::isinf(v) && !starts_with_word(first + (negative ? 1 : 0), end, "inf")) {
         return {end, std::errc::result_out_of_range};
     }
     if (range_error && v == 0) return {end, std::errc::result_out_of_range};

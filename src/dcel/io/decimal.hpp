@@ -11,7 +11,8 @@
 // Both follow libstdc++'s from_chars: the longest prefix of [first, last)
 // of the form -?(digits[.digits]|.digits)([eE][+-]?digits)?, or inf,
 // infinity, nan, nan(chars) in any case; no leading '+', space or "0x".
-// Nothing matches: invalid_argument, ptr = first. Beyond the double range,
+// A NaN is the quiet NaN with the sign written, whatever the chars of
+// nan(chars). Nothing matches: invalid_argument, ptr = first. Beyond the double range,
 // and a nonzero literal whose nearest double is zero (1e-400):
 // result_out_of_range, ptr past the match, value untouched.
 //
