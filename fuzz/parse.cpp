@@ -3,9 +3,10 @@
 // Checks that each reader (graph, dump, faces answer, answer) either gives a
 // clean InvalidInput (a kind a reader may raise, a one-line message) or a
 // value that survives a write/read round trip unchanged; that a graph read
-// builds into a DCEL that validate() passes, or is refused with a clean
-// error; and that validate() and validate_all() agree on any dump read,
-// however broken. Never a crash, hang, leak or undefined behaviour.
+// builds into a DCEL that validate() passes, whose faces written straight
+// from it (write_faces_of) are write_faces(boundary_cycles()), or is
+// refused with a clean error; and that validate() and validate_all() agree
+// on any dump read, however broken. Never a crash, hang, leak or undefined behaviour.
 //
 // Compares with an independent JSON parser, nlohmann/json
 // (support/json_reference.hpp): the library's JSON reader accepts exactly
@@ -14,7 +15,8 @@
 // range of a double (which nlohmann refuses; the reader refuses them only
 // where it reads the number). The graph and faces readers accept exactly
 // the documents whose values, as nlohmann reads them, have the documented
-// shape, and read the same values (but where a number that is no integer
+// shape (and read_points the documents that are one array of points), and
+// read the same values (but where a number that is no integer
 // reads as one, 5e-3241 or 1.00000000000000001: the reader decides an index
 // on the exact decimal and must refuse it, nlohmann's double cannot tell);
 // a dump the reader accepts holds nlohmann's values field by field.
@@ -37,6 +39,7 @@
 #include "dcel/io/decimal.hpp"
 #include "dcel/io/graph_json.hpp"
 #include "dcel/io/json_reader.hpp"
+#include "dcel/queries.hpp"
 #include "dcel/validate.hpp"
 #include "support/fuzz_check.hpp"
 #include "support/json_reference.hpp"
@@ -170,9 +173,28 @@ void graph_path(std::string_view text, const JsonFacts& facts) {
     FUZZ_CHECK(d.num_vertices() == g.vertices.size() && d.num_edges() == g.edges.size(), "build lost elements");
     const CheckResult v = validate(d);
     FUZZ_CHECK(!v, "validate rejects a built DCEL: [" << to_string(v->invariant) << "] " << v->message);
+    FUZZ_CHECK(io::write_faces_of(d) == io::write_faces(boundary_cycles(d)),
+               "write_faces_of differs from write_faces(boundary_cycles())");
     const DcelDump dump = to_dump(d);
     for (const io::DumpStyle style : {io::DumpStyle::Lines, io::DumpStyle::Compact}) {
         FUZZ_CHECK(same_dump(io::read_dump(io::write_dump(dump, style)), dump), "dump round trip changed it");
+    }
+}
+
+// read_points (`dcel locate --points`): nlohmann's array of points, or a clean refusal.
+void points_path(std::string_view text, const JsonFacts& facts) {
+    const auto expected = comparable(facts) ? expected_points(text) : std::nullopt;
+    std::vector<Point> points;
+    try {
+        points = io::read_points(text);
+    } catch (const InvalidInput& e) {
+        check_clean(e, true);
+        FUZZ_CHECK(!expected, "read_points refuses points nlohmann reads: " << e.what());
+        return;
+    }
+    if (comparable(facts)) {
+        FUZZ_CHECK(expected, "read_points accepts a document that is no array of points by nlohmann's reading");
+        FUZZ_CHECK(*expected == points, "read_points reads other values than nlohmann");
     }
 }
 
@@ -240,6 +262,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     dcel::fuzz::check_json_syntax(text, facts);
     dcel::fuzz::check_decimal_routes(text);
     dcel::fuzz::graph_path(text, facts);
+    dcel::fuzz::points_path(text, facts);
     dcel::fuzz::dump_path(text, facts);
     dcel::fuzz::faces_path(text, facts);
     dcel::fuzz::answer_path(text);

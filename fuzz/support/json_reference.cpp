@@ -225,6 +225,8 @@ std::optional<PlanarGraph> expected_graph(std::string_view text, const JsonFacts
     return PlanarGraph{std::move(*vs), std::move(*es)};
 }
 
+std::optional<std::vector<Point>> expected_points(std::string_view text) { return points(tree(text)); }
+
 std::optional<std::vector<std::vector<Index>>> expected_faces(std::string_view text, const JsonFacts& facts) {
     const Json j = tree(text);
     if (j.is_object()) {

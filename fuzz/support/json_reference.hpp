@@ -37,6 +37,10 @@ struct JsonFacts {
 // Only for accepted documents of depth at most `max_depth`.
 [[nodiscard]] std::optional<PlanarGraph> expected_graph(std::string_view text, const JsonFacts& facts);
 
+// The points of a document that is one array of them, [[x, y], ...] (what
+// `dcel locate --points` reads), or nothing.
+[[nodiscard]] std::optional<std::vector<Point>> expected_points(std::string_view text);
+
 // The cycles of a faces answer, {"faces": [[v, ...], ...]} or bare.
 [[nodiscard]] std::optional<std::vector<std::vector<Index>>> expected_faces(std::string_view text, const JsonFacts& facts);
 
