@@ -47,8 +47,14 @@ TEST(DecimalFallback, EdgesOfTheGrammar) {
           "1E+5",       "1e-5", "1e",       "1e+",       "1e-",   "1.5e3x", "12abc", "+1",   " 1",    "-",
           ".",          "-.",   "",         "e5",        "0x1p3", "0X10",   "00012", "1..2", "1.2.3", "inf",
           "-inf",       "INF",  "Infinity", "-infinity", "infin", "infx",   "nan",   "-nan", "NaN",   "nan(123)",
-          "nan(abc_9)", "nan(", "nan()",    "nan(1 2)",  "in",    "na",     "--1", "-nan(1)", "NaN(0x5)",
-          "nan(123456789012345678901234567890)"}) {
+          "nan(abc_9)", "nan(", "nan()",    "nan(1 2)",  "in",    "na",     "--1"}) {
+        EXPECT_EQ(disagreement(s), "");
+    }
+}
+
+// glibc's strtod makes the chars of nan(chars) the payload; from_chars does not.
+TEST(DecimalFallback, NanCharsAreNoPayload) {
+    for (const char* s : {"nan(1)", "-nan(1)", "NaN(0x5)", "nan(123456789012345678901234567890)"}) {
         EXPECT_EQ(disagreement(s), "");
     }
 }
