@@ -21,7 +21,8 @@
 // area rounded once); and at a few points and segments built from the
 // graph's own points (vertices, rounded edge midpoints, rounded centroids),
 // PointLocator and locate_by_scan against exact point location, and
-// stab_segment against the exact stabbing checks (tests/oracles/stab_walk.hpp).
+// stab_segment and stab_line against the exact stabbing checks
+// (tests/oracles/stab_walk.hpp).
 //
 // Input: readable text (support/graph_input.hpp): a recipe naming a
 // generated graph, e.g.
@@ -223,6 +224,34 @@ std::vector<Point> probes(const PlanarGraph& g) {
     return out;
 }
 
+// stab_line through a and b against the exact line checks; started from a
+// half-edge whose edge the line meets it walks the same, and from one whose
+// edge lies strictly on one side it refuses with TopologyError.
+void check_line(const Dcel& d, const oracle::ExactLocator& exact, Point a, Point b) {
+    const std::vector<StabPiece> line = stab_line(d, a, b);
+    const std::string problem = oracle::check_line_walk(d, exact, a, b, line);
+    FUZZ_CHECK(problem.empty(),
+               "stab_line through (" << a.x << ", " << a.y << ") and (" << b.x << ", " << b.y << "): " << problem);
+    for (const StabPiece& p : line) {
+        if (p.kind != StabPiece::Kind::Edge) continue;
+        FUZZ_CHECK(stab_line(d, a, b, half_edge_of(p.edge, 1)) == line,
+                   "stab_line started on e" << p.edge.index() << " walks another way");
+        break;
+    }
+    for (Index e = 0; e < d.num_edges(); ++e) {
+        const HalfEdgeId h = half_edge_of(EdgeId(e), 0);
+        if (oracle::orientation(a, b, d.point(d.origin(h))) * oracle::orientation(a, b, d.point(d.target(h))) <= 0) continue;
+        bool refused = false;
+        try {
+            (void)stab_line(d, a, b, h);
+        } catch (const TopologyError&) {
+            refused = true;
+        }
+        FUZZ_CHECK(refused, "stab_line started on e" << e << ", which the line misses, does not refuse");
+        break;
+    }
+}
+
 void check_location_and_stabbing(const Dcel& d, const PlanarGraph& g) {
     const std::vector<Point> points = probes(g);
     if (points.empty()) return;
@@ -243,6 +272,7 @@ void check_location_and_stabbing(const Dcel& d, const PlanarGraph& g) {
         const std::string problem = oracle::check_walk(d, exact, a, b, stab_segment(d, a, b));
         FUZZ_CHECK(problem.empty(),
                    "stab_segment from (" << a.x << ", " << a.y << ") to (" << b.x << ", " << b.y << "): " << problem);
+        if (a != b) check_line(d, exact, a, b);
     }
 }
 

@@ -1,12 +1,14 @@
 // Independent checks of one stabbing walk (dcel/stab.hpp) over a DCEL taken
 // as right: the vertices and edges it meets must be those a brute-force scan
-// finds (exact.hpp's meeting); they must come in strictly increasing order
-// along the segment (exact rational positions, independent of the library's
-// line order); each face must sit between things on its boundary; and the
-// walk must start and end where the point location below says.
+// finds (exact.hpp's meeting and orientation); they must come in strictly
+// increasing order along the segment or line (exact rational positions,
+// independent of the library's line order); each face must sit between
+// things on its boundary; and a segment's walk must start and end where the
+// point location below says, a line's in the unbounded face.
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -68,49 +70,30 @@ private:
 
 inline Location locate_exactly(const Dcel& d, Point p) { return ExactLocator(d).locate(p); }
 
-// Checks one walk from a to b; returns a description of the first problem,
-// or "" when there is none.
-inline std::string check_walk(const Dcel& d, const ExactLocator& locator, Point a, Point b,
-                              const std::vector<StabPiece>& pieces) {
-    if (pieces.empty()) return "no pieces";
-    auto matches = [&](const StabPiece& p, Location l) {
-        switch (l.kind) {
-            case Location::Kind::Face: return p.kind == StabPiece::Kind::Face && p.face == l.face;
-            case Location::Kind::Edge: return p.kind == StabPiece::Kind::Edge && p.edge == l.edge;
-            case Location::Kind::Vertex: return p.kind == StabPiece::Kind::Vertex && p.vertex == l.vertex;
-        }
-        return false;
-    };
-    if (!matches(pieces.front(), locator.locate(a))) return "does not start where a lies";
-    if (a == b) return pieces.size() == 1 ? "" : "a point gives more than one piece";
-    if (!matches(pieces.back(), locator.locate(b))) return "does not end where b lies";
-    // The brute-force contacts.
-    std::set<Index> want_vertices, want_across, want_along, got_vertices, got_across, got_along;
-    for (Index v = 0; v < d.num_vertices(); ++v) {
-        const Point p = d.point(VertexId(v));
-        if (p == a || p == b || strictly_on_segment(a, b, p)) want_vertices.insert(v);
-    }
-    for (Index e = 0; e < d.num_edges(); ++e) {
-        const HalfEdgeId h = half_edge_of(EdgeId(e), 0);
-        const Point c = d.point(d.origin(h));
-        const Point dd = d.point(d.target(h));
-        const Meeting m = meeting(a, b, c, dd);
-        if (m == Meeting::Crossing) want_across.insert(e);
-        if (m == Meeting::Overlap || m == Meeting::Same) want_along.insert(e);
-        // Starting or ending inside an edge counts as crossing it there.
-        if (m == Meeting::Touch && (strictly_on_segment(c, dd, a) || strictly_on_segment(c, dd, b))) want_across.insert(e);
-    }
+namespace detail {
+
+// What a walk must meet, by brute force: vertex, edge crossed and edge run
+// along ids.
+struct Contacts {
+    std::set<Index> vertices, across, along;
+};
+
+// The pieces meet exactly `want`, each once, in strictly increasing order
+// along a->b (exact positions, t = 0 at a and 1 at b, any t for a line),
+// and every face sits between things on its boundary.
+inline std::string check_pieces(const Dcel& d, const ExactLocator& locator, Point a, Point b,
+                                const std::vector<StabPiece>& pieces, const Contacts& want) {
+    Contacts got;
     for (const StabPiece& p : pieces) {
-        if (p.kind == StabPiece::Kind::Vertex && !got_vertices.insert(p.vertex.index()).second) return "vertex twice";
-        if (p.kind == StabPiece::Kind::Edge && !(p.along ? got_along : got_across).insert(p.edge.index()).second) {
+        if (p.kind == StabPiece::Kind::Vertex && !got.vertices.insert(p.vertex.index()).second) return "vertex twice";
+        if (p.kind == StabPiece::Kind::Edge && !(p.along ? got.along : got.across).insert(p.edge.index()).second) {
             return "edge twice";
         }
     }
-    if (got_vertices != want_vertices) return "wrong vertices";
-    if (got_across != want_across) return "wrong edges crossed";
-    if (got_along != want_along) return "wrong edges run along";
-    // Order, and what sits next to what.
-    Rational last = -1;
+    if (got.vertices != want.vertices) return "wrong vertices";
+    if (got.across != want.across) return "wrong edges crossed";
+    if (got.along != want.along) return "wrong edges run along";
+    std::optional<Rational> last;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const StabPiece& p = pieces[i];
         if (p.kind == StabPiece::Kind::Vertex || (p.kind == StabPiece::Kind::Edge && !p.along)) {
@@ -121,7 +104,7 @@ inline std::string check_walk(const Dcel& d, const ExactLocator& locator, Point 
                 const HalfEdgeId h = half_edge_of(p.edge, 0);
                 t = parameter_of_crossing(a, b, d.point(d.origin(h)), d.point(d.target(h)));
             }
-            if (t <= last) return "out of order at piece " + std::to_string(i);
+            if (last && t <= *last) return "out of order at piece " + std::to_string(i);
             last = t;
         }
         if (p.kind != StabPiece::Kind::Face) continue;
@@ -141,6 +124,67 @@ inline std::string check_walk(const Dcel& d, const ExactLocator& locator, Point 
         }
     }
     return "";
+}
+
+}  // namespace detail
+
+// Checks one walk from a to b; returns a description of the first problem,
+// or "" when there is none.
+inline std::string check_walk(const Dcel& d, const ExactLocator& locator, Point a, Point b,
+                              const std::vector<StabPiece>& pieces) {
+    if (pieces.empty()) return "no pieces";
+    auto matches = [&](const StabPiece& p, Location l) {
+        switch (l.kind) {
+            case Location::Kind::Face: return p.kind == StabPiece::Kind::Face && p.face == l.face;
+            case Location::Kind::Edge: return p.kind == StabPiece::Kind::Edge && p.edge == l.edge;
+            case Location::Kind::Vertex: return p.kind == StabPiece::Kind::Vertex && p.vertex == l.vertex;
+        }
+        return false;
+    };
+    if (!matches(pieces.front(), locator.locate(a))) return "does not start where a lies";
+    if (a == b) return pieces.size() == 1 ? "" : "a point gives more than one piece";
+    if (!matches(pieces.back(), locator.locate(b))) return "does not end where b lies";
+    // The brute-force contacts.
+    detail::Contacts want;
+    for (Index v = 0; v < d.num_vertices(); ++v) {
+        const Point p = d.point(VertexId(v));
+        if (p == a || p == b || strictly_on_segment(a, b, p)) want.vertices.insert(v);
+    }
+    for (Index e = 0; e < d.num_edges(); ++e) {
+        const HalfEdgeId h = half_edge_of(EdgeId(e), 0);
+        const Point c = d.point(d.origin(h));
+        const Point dd = d.point(d.target(h));
+        const Meeting m = meeting(a, b, c, dd);
+        if (m == Meeting::Crossing) want.across.insert(e);
+        if (m == Meeting::Overlap || m == Meeting::Same) want.along.insert(e);
+        // Starting or ending inside an edge counts as crossing it there.
+        if (m == Meeting::Touch && (strictly_on_segment(c, dd, a) || strictly_on_segment(c, dd, b))) want.across.insert(e);
+    }
+    return detail::check_pieces(d, locator, a, b, pieces, want);
+}
+
+// Checks one walk along the whole line through a and b (a != b), from a's
+// side of infinity to b's: it starts and ends in the unbounded face, meets
+// every vertex on the line, crosses every edge whose ends lie strictly on
+// either side, and runs along every edge with both ends on the line.
+inline std::string check_line_walk(const Dcel& d, const ExactLocator& locator, Point a, Point b,
+                                   const std::vector<StabPiece>& pieces) {
+    if (pieces.empty()) return "no pieces";
+    for (const StabPiece* end : {&pieces.front(), &pieces.back()}) {
+        if (end->kind != StabPiece::Kind::Face || end->face != Dcel::kUnboundedFace)
+            return "an end not in the unbounded face";
+    }
+    detail::Contacts want;
+    for (Index v = 0; v < d.num_vertices(); ++v) {
+        if (orientation(a, b, d.point(VertexId(v))) == 0) want.vertices.insert(v);
+    }
+    for (Index e = 0; e < d.num_edges(); ++e) {
+        const HalfEdgeId h = half_edge_of(EdgeId(e), 0);
+        const int oc = orientation(a, b, d.point(d.origin(h))), od = orientation(a, b, d.point(d.target(h)));
+        if (oc * od < 0) want.across.insert(e);
+        if (oc == 0 && od == 0) want.along.insert(e);
+    }
+    return detail::check_pieces(d, locator, a, b, pieces, want);
 }
 
 inline std::string check_walk(const Dcel& d, Point a, Point b, const std::vector<StabPiece>& pieces) {
