@@ -36,6 +36,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -164,6 +166,33 @@ void check_faces_around(const Dcel& d, const Embedded& e) {
     }
 }
 
+// cycle_reversed(h) is cycle(h) walked backwards from h; the link arrays
+// handed out whole (for the Python module's views) are prev(), face() and
+// out() id by id.
+void check_orbits(const Dcel& d) {
+    for (Index i = 0; i < d.num_half_edges(); ++i) {
+        const HalfEdgeId h(i);
+        FUZZ_CHECK(d.prev_links()[i] == d.prev(h) && d.left_faces()[i] == d.face(h),
+                   "prev_links() or left_faces() differs from prev() or face() at h" << i);
+    }
+    for (Index i = 0; i < d.num_vertices(); ++i) {
+        FUZZ_CHECK(d.out_links()[i] == d.out(VertexId(i)), "out_links() differs from out() at v" << i);
+    }
+    std::vector<char> seen(d.num_half_edges(), 0);
+    for (Index i = 0; i < d.num_half_edges(); ++i) {
+        if (seen[i] != 0) continue;
+        std::vector<HalfEdgeId> forward, backward;
+        for (const HalfEdgeId h : d.cycle(HalfEdgeId(i))) {
+            forward.push_back(h);
+            seen[h.index()] = 1;
+        }
+        // The iterator's post-increment, which range-for never uses.
+        for (auto it = d.cycle_reversed(HalfEdgeId(i)).begin(); it != std::default_sentinel; it++) backward.push_back(*it);
+        std::reverse(backward.begin() + 1, backward.end());
+        FUZZ_CHECK(backward == forward, "cycle_reversed(h" << i << ") is not cycle(h" << i << ") backwards");
+    }
+}
+
 void check_neighbours(const Dcel& d) {
     std::vector<std::vector<FaceId>> expected(d.num_faces());
     for (Index i = 0; i < d.num_half_edges(); ++i) {
@@ -232,6 +261,11 @@ void check_line(const Dcel& d, const oracle::ExactLocator& exact, Point a, Point
     const std::string problem = oracle::check_line_walk(d, exact, a, b, line);
     FUZZ_CHECK(problem.empty(),
                "stab_line through (" << a.x << ", " << a.y << ") and (" << b.x << ", " << b.y << "): " << problem);
+    std::vector<FaceId> faces;
+    for (const StabPiece& p : line) {
+        if (p.kind == StabPiece::Kind::Face) faces.push_back(p.face);
+    }
+    FUZZ_CHECK(faces_in_order(line) == faces, "faces_in_order() is not the line's face pieces");
     for (const StabPiece& p : line) {
         if (p.kind != StabPiece::Kind::Edge) continue;
         FUZZ_CHECK(stab_line(d, a, b, half_edge_of(p.edge, 1)) == line,
@@ -252,6 +286,37 @@ void check_line(const Dcel& d, const oracle::ExactLocator& exact, Point a, Point
     }
 }
 
+// The walks refuse what they cannot follow, each with InvalidInput of the
+// kind its contract names: a point with a coordinate that is not finite,
+// a "line" through one point, a start half-edge the DCEL does not have.
+template <class Walk>
+void check_refused(Walk walk, InputErrorKind kind, const char* what) {
+    bool refused = false;
+    try {
+        (void)walk();
+    } catch (const InvalidInput& e) {
+        const std::string_view message = e.what();
+        FUZZ_CHECK(e.kind() == kind && message.find('\n') == std::string_view::npos,
+                   what << " is refused with " << to_string(e.kind()) << ": " << message);
+        refused = true;
+    }
+    FUZZ_CHECK(refused, what << " is not refused");
+}
+
+void check_refusals(const Dcel& d, Point finite, Point not_finite) {
+    check_refused([&] { return stab_segment(d, finite, not_finite); }, InputErrorKind::BadCoordinate,
+                  "stab_segment to a point that is not finite");
+    check_refused([&] { return stab_line(d, not_finite, finite); }, InputErrorKind::BadCoordinate,
+                  "stab_line through a point that is not finite");
+    check_refused([&] { return stab_line(d, finite, finite); }, InputErrorKind::BadCoordinate,
+                  "stab_line through one point twice");
+    check_refused([&] { return stab_line(d, finite, finite, HalfEdgeId(0)); }, InputErrorKind::BadCoordinate,
+                  "stab_line from a half-edge through one point twice");
+    const Point other{finite.x == 0 ? 1.0 : 0.0, finite.y};
+    check_refused([&] { return stab_line(d, finite, other, HalfEdgeId(d.num_half_edges())); }, InputErrorKind::BadIndex,
+                  "stab_line from a half-edge past the last");
+}
+
 void check_location_and_stabbing(const Dcel& d, const PlanarGraph& g) {
     const std::vector<Point> points = probes(g);
     if (points.empty()) return;
@@ -266,9 +331,15 @@ void check_location_and_stabbing(const Dcel& d, const PlanarGraph& g) {
                                                                          << locate_by_scan(d, p) << ", exact location "
                                                                          << want);
     }
+    auto finite = [](Point p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+    const auto good = std::find_if(points.begin(), points.end(), finite);
+    const auto bad = std::find_if_not(points.begin(), points.end(), finite);
+    if (good != points.end()) {
+        check_refusals(d, *good, bad != points.end() ? *bad : Point{std::numeric_limits<double>::quiet_NaN(), good->y});
+    }
     for (std::size_t i = 0; i + 1 < points.size(); i += 2) {
         const Point a = points[i], b = points[i + 1];
-        if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y)) continue;
+        if (!finite(a) || !finite(b)) continue;
         const std::string problem = oracle::check_walk(d, exact, a, b, stab_segment(d, a, b));
         FUZZ_CHECK(problem.empty(),
                    "stab_segment from (" << a.x << ", " << a.y << ") to (" << b.x << ", " << b.y << "): " << problem);
@@ -297,6 +368,7 @@ bool check(const GraphInput& in) {
     check_euler(d, g);
     check_faces_around(d, embedded);
     check_neighbours(d);
+    check_orbits(d);
     check_areas(d);
     check_location_and_stabbing(d, g);
     return true;
