@@ -317,9 +317,10 @@ TEST(Pictures, RegionsAndOddAnswers) {
     const dcel::PlanarGraph g = dcel::io::read_graph(kSquareHole);
     const dcel::Dcel d = dcel::build(g);
     // Regions: the holed square (its hole listed the other way round and from
-    // another vertex) and the triangle match; a triangle 0, 1, 2 does not.
+    // another vertex) and the triangle match; a triangle 0, 1, 2 does not,
+    // and the triangle listed again from another vertex is a repeat.
     dcel::check::CounterexampleDrawing regions{&g, &d};
-    regions.answer_polygons = {{{0, 1, 2, 3}, {4, 6, 5}}, {{6, 4, 5}}, {{0, 1, 2}}};
+    regions.answer_polygons = {{{0, 1, 2, 3}, {4, 6, 5}}, {{6, 4, 5}}, {{0, 1, 2}}, {{5, 6, 4}}};
     const std::string svg = dcel::check::render_counterexample_svg(regions);
     save("regions", svg);
     expect_legible_labels(svg, "regions");
@@ -331,8 +332,23 @@ TEST(Pictures, RegionsAndOddAnswers) {
     const std::size_t matched = occurrences("class=\"answer-region\" ");
     const std::size_t unmatched = occurrences("class=\"answer-region extra\"");
     EXPECT_EQ(matched, 2U);
-    EXPECT_EQ(unmatched, 1U);
+    EXPECT_EQ(unmatched, 2U);
+    EXPECT_NE(svg.find("or a repeat of a region drawn already"), std::string::npos);
     EXPECT_TRUE(inset_vertices(svg).empty());
+
+    // Cycles: the square's outer cycle twice (from another vertex the second
+    // time): its four steps in face colour once, then brown.
+    dcel::check::CounterexampleDrawing twice{&g, &d};
+    twice.answer_cycles = {{0, 1, 2, 3}, {2, 3, 0, 1}};
+    const std::string twice_svg = dcel::check::render_counterexample_svg(twice);
+    const auto count = [](const std::string& text, const std::string& what) {
+        std::size_t n = 0;
+        for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+        return n;
+    };
+    EXPECT_EQ(count(twice_svg, "class=\"answer-step\""), 4U);
+    EXPECT_EQ(count(twice_svg, "class=\"answer-step extra\""), 4U);
+    EXPECT_NE(twice_svg.find("or the answer repeats it"), std::string::npos);
 
     // A cycle that arrives at v1 along 0 -> 1 and leaves for v6, which is no
     // neighbour of v1: the inset at v1 says so (the reference goes on to v2).

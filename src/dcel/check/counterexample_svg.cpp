@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <unordered_map>
 
 #include "dcel/check/counterexample_inset.hpp"
@@ -32,7 +33,7 @@ constexpr double kGap = 24;  // between panels
 constexpr double kFont = 11;
 constexpr double kLine = 15;
 constexpr std::size_t kMaxInsets = 6;
-constexpr const char* kExtraInk = "#b35806";  // an answer cycle the reference does not have: brown
+constexpr const char* kExtraInk = "#b35806";  // an answer cycle the reference does not have, or a repeat: brown
 
 std::string vertex_name(Index v) { return "v" + std::to_string(v); }
 
@@ -131,8 +132,13 @@ void paint_answer_cycles(std::string& out, const DrawnDcel& g, const Counterexam
                          const std::vector<Inset>& insets) {
     const auto by_ends = half_edges_by_ends(g.dcel());
     out += "<g id=\"answer-cycles\">\n";
+    // A cycle the answer lists twice is drawn brown the second time: in its
+    // face's colour it would lie exactly on the first copy and not be seen.
+    std::set<std::vector<Index>> drawn;
     for (const auto& cycle : in.answer_cycles) {
-        const auto match = ref.face_of.find(canonical(cycle));
+        const std::vector<Index> key = canonical(cycle);
+        const bool repeat = !drawn.insert(key).second;
+        const auto match = repeat ? ref.face_of.end() : ref.face_of.find(key);
         const std::string ink = match != ref.face_of.end() ? io::svg::face_ink(match->second) : kExtraInk;
         for (std::size_t i = 0; i < cycle.size(); ++i) {
             const auto line = step_line(g, by_ends, cycle[i], cycle[(i + 1) % cycle.size()]);
@@ -157,9 +163,17 @@ void paint_answer_polygons(std::string& out, const DrawnDcel& g, const Counterex
                            const ReferenceCycles& ref) {
     const auto by_ends = half_edges_by_ends(g.dcel());
     out += "<g id=\"answer-regions\" fill-rule=\"evenodd\">\n";
+    // A polygon the answer lists twice (its rings the same up to order,
+    // rotation and direction) is salmon the second time, as cycles are brown.
+    std::set<std::vector<std::vector<Index>>> drawn_polygons;
     for (const auto& polygon : in.answer_polygons) {
         if (polygon.empty()) continue;
-        bool all_match = true;
+        std::vector<std::vector<Index>> key;
+        key.reserve(polygon.size());
+        for (const auto& ring : polygon) key.push_back(canonical_ring(ring));
+        std::sort(key.begin(), key.end());
+        const bool repeat = !drawn_polygons.insert(std::move(key)).second;
+        bool all_match = !repeat;
         std::optional<Index> face;
         std::string d;
         std::string outline;
@@ -334,16 +348,18 @@ std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
     if (!in.answer_cycles.empty()) {
         caption.emplace_back("right, " + shortened(in.answer_name, 70) + ": its cycles as arrows, in the colour of the",
                              io::svg::kAnswerInk);
-        caption.emplace_back("  reference face with the same cycle, brown when the reference has no such cycle;",
+        caption.emplace_back("  reference face with the same cycle, brown when the reference has no such cycle",
                              io::svg::kAnswerInk);
+        caption.emplace_back("  or the answer repeats it;", io::svg::kAnswerInk);
         caption.emplace_back(
             insets.empty() ? "  its next agrees with the reference's at every step it takes"
                            : "  thick red: its next where it differs from the reference's (the step out of the vertex)",
             io::svg::kAnswerInk);
     }
     if (!in.answer_polygons.empty()) {
-        caption.emplace_back("right: the answer's regions, tinted like the reference face they match; salmon: no match",
+        caption.emplace_back("right: the answer's regions, tinted like the reference face they match; salmon: no match,",
                              io::svg::kAnswerInk);
+        caption.emplace_back("  or a repeat of a region drawn already", io::svg::kAnswerInk);
     }
     if (!insets.empty()) {
         caption.emplace_back("insets: the vertex's edges as a fan in their exact clockwise order (angles not to scale);",
