@@ -324,13 +324,13 @@ TEST(Pictures, RegionsAndOddAnswers) {
     const std::string svg = dcel::check::render_counterexample_svg(regions);
     save("regions", svg);
     expect_legible_labels(svg, "regions");
-    const auto occurrences = [&](const std::string& what) {
+    const auto count = [](const std::string& text, const std::string& what) {
         std::size_t n = 0;
-        for (std::size_t at = svg.find(what); at != std::string::npos; at = svg.find(what, at + 1)) ++n;
+        for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
         return n;
     };
-    const std::size_t matched = occurrences("class=\"answer-region\" ");
-    const std::size_t unmatched = occurrences("class=\"answer-region extra\"");
+    const std::size_t matched = count(svg, "class=\"answer-region\" ");
+    const std::size_t unmatched = count(svg, "class=\"answer-region extra\"");
     EXPECT_EQ(matched, 2U);
     EXPECT_EQ(unmatched, 2U);
     EXPECT_NE(svg.find("or a repeat of a region drawn already"), std::string::npos);
@@ -341,11 +341,6 @@ TEST(Pictures, RegionsAndOddAnswers) {
     dcel::check::CounterexampleDrawing twice{&g, &d};
     twice.answer_cycles = {{0, 1, 2, 3}, {2, 3, 0, 1}};
     const std::string twice_svg = dcel::check::render_counterexample_svg(twice);
-    const auto count = [](const std::string& text, const std::string& what) {
-        std::size_t n = 0;
-        for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-        return n;
-    };
     EXPECT_EQ(count(twice_svg, "class=\"answer-step\""), 4U);
     EXPECT_EQ(count(twice_svg, "class=\"answer-step extra\""), 4U);
     EXPECT_NE(twice_svg.find("or the answer repeats it"), std::string::npos);

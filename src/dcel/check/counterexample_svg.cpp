@@ -168,17 +168,19 @@ void paint_answer_polygons(std::string& out, const DrawnDcel& g, const Counterex
     std::set<std::vector<std::vector<Index>>> drawn_polygons;
     for (const auto& polygon : in.answer_polygons) {
         if (polygon.empty()) continue;
-        std::vector<std::vector<Index>> key;
-        key.reserve(polygon.size());
-        for (const auto& ring : polygon) key.push_back(canonical_ring(ring));
+        std::vector<std::vector<Index>> canonical_rings;
+        canonical_rings.reserve(polygon.size());
+        for (const auto& ring : polygon) canonical_rings.push_back(canonical_ring(ring));
+        std::vector<std::vector<Index>> key = canonical_rings;
         std::sort(key.begin(), key.end());
         const bool repeat = !drawn_polygons.insert(std::move(key)).second;
         bool all_match = !repeat;
         std::optional<Index> face;
         std::string d;
         std::string outline;
-        for (const auto& ring : polygon) {
-            const auto match = ref.face_of_ring.find(canonical_ring(ring));
+        for (std::size_t r = 0; r < polygon.size(); ++r) {
+            const auto& ring = polygon[r];
+            const auto match = ref.face_of_ring.find(canonical_rings[r]);
             if (match == ref.face_of_ring.end()) all_match = false;
             if (!face && match != ref.face_of_ring.end()) face = match->second;
             Polyline drawn;
