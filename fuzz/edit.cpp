@@ -19,7 +19,9 @@
 // flags. x and y are small grid coordinates (-1 .. 7); flags bits 0-1 give
 // `at` (the new point at a vertex or an edge's middle), and bit 2 says 16
 // raw bytes follow: the point as two doubles (non-finite ones become 0), so
-// exactness is fuzzed too (support/edit_input.hpp). The custom mutator
+// exactness is fuzzed too; bits 3-5 all set make a and b wild ids, any
+// 32-bit id instead of one modulo the count, so that the refusal of an id
+// past the end (or the null id) is fuzzed too (support/edit_input.hpp). The custom mutator
 // (support/edit_mutator.hpp) inserts, deletes, copies, swaps and changes
 // whole steps, and gives new steps raw points a few ulps from the start
 // map's vertices or within rounding of the line through two of them.
@@ -59,6 +61,7 @@ void check_step(Dcel& d, PlanarGraph& model, const Step& s, int index) {
     const std::size_t faces_before = d.num_faces();
     Change change;
     bool refused = false;
+    bool bad_index = false;
     std::string reason;
     try {
         change = testing::apply(d, s, r);
@@ -68,9 +71,12 @@ void check_step(Dcel& d, PlanarGraph& model, const Step& s, int index) {
     } catch (const InvalidInput& e) {
         refused = true;
         reason = e.what();
+        bad_index = e.kind() == InputErrorKind::BadIndex;
     }
     FUZZ_CHECK(!(refused && valid), "step " << index << " " << s << ": refused an edit build() accepts: " << reason);
     FUZZ_CHECK(!(!refused && !valid), "step " << index << " " << s << ": accepted an edit build() rejects");
+    FUZZ_CHECK(r.ids_in_range || bad_index,
+               "step " << index << " " << s << ": an id past the end was not refused as a bad index: " << reason);
     if (refused) {
         FUZZ_CHECK(testing::same_dump(before, to_dump(d)), "step " << index << " " << s << ": a refusal changed the DCEL");
         return;

@@ -4,6 +4,7 @@
 // graph drawn below, so what must be reported is known without asking the
 // comparison: which polygons a polygonizer gives, which rings a face finder
 // gives, and what each changed answer lacks.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -210,6 +211,38 @@ TEST(CheckRegions, DanglingEdgesBoundNothing) {
     EXPECT_TRUE(check_text(d, R"({"polygons": [[[0,1,4,1,2]]]})").agrees());
 }
 
+// A degenerate ring [u, v] walks a lone edge there and back: it cancels, as
+// [u, v, u, v] and a there-and-back path do; a ring of one point walks
+// nothing. The same answer spelled either way gets the same verdict.
+TEST(CheckRegions, DegenerateRingsCancelLikeTheirLongSpellings) {
+    // examples/check/graph.json, with a lone edge 8-9 inside the triangle.
+    const Dcel d = reference(R"({"vertices": [[0,0],[4,0],[4,4],[0,4],[1,1],[2,1],[1,2],[5,5],[1.2,1.2],[1.4,1.2]],
+        "edges": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6],[6,4],[0,4],[8,9]]})");
+    for (const char* spelling : {R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[8,9]]]})",
+                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[8,9,8,9]]]})",
+                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[9,8,9]]]})",
+                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[7]]]})",
+                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[]]]})",
+                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6]]]})"}) {
+        EXPECT_TRUE(check_text(d, spelling).agrees()) << spelling;
+    }
+}
+
+// A polygon that walks a half-edge twice (its hole listed twice) is no face:
+// a difference, not a crash in the part that explains what a face lacks.
+TEST(CheckRegions, ARingListedTwiceIsADifference) {
+    const Dcel d = reference(R"({"vertices": [[0,0],[4,0],[4,4],[0,4],[1,1],[2,1],[1,2],[5,5]],
+        "edges": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6],[6,4],[0,4]]})");
+    const Report r = check_text(d, R"({"polygons": [[[0,1,2,3],[5,4,6],[5,4,6]],[[4,5,6]]]})");
+    ASSERT_FALSE(r.agrees());
+    EXPECT_TRUE(std::any_of(r.differences.begin(), r.differences.end(), [](const check::Difference& x) {
+        return x.kind == check::DifferenceKind::ExtraPolygon && x.message.find("more than once") != std::string::npos;
+    }));
+    // Shells that overlap a face twice, and a shell listed twice in one polygon.
+    EXPECT_FALSE(check_text(d, R"({"polygons": [[[0,1,2,3],[0,1,2,3]],[[4,5,6]]]})").agrees());
+    EXPECT_FALSE(check_text(d, R"({"rings": [[0,1,2,3],[4,5,6],[4,5,6]]})").agrees());
+}
+
 // faces: closed cycles, 1-based ids and faces on the right.
 TEST(CheckFaces, Conventions) {
     const Dcel d = reference(R"({"vertices": [[0,0],[1,0],[0,1]], "edges": [[0,1],[1,2],[2,0]]})");
@@ -299,8 +332,19 @@ TEST(ReadAnswer, RefusesWhatFitsNoKindWithThePath) {
         return std::string("accepted");
     };
     EXPECT_NE(message(R"({"answer": 1})").find("needs a \"faces\""), std::string::npos);
-    EXPECT_NE(message(R"({"type": "LineString", "coordinates": [[0, 0], [1, 1]]})").find("LineString is not a polygon"),
+    EXPECT_NE(message(R"({"type": "LineString", "coordinates": [[0, 0], [1, 1]]})")
+                  .find(R"(of type "LineString" is not a polygon)"),
               std::string::npos);
+    // The answer's own text is quoted and escaped, never echoed raw.
+    // (Ordinary literals: in a raw literal, gcc reads \u as a universal character name.)
+    EXPECT_NE(message("{\"type\": \"Poly\\u001b[31m\\ngon\\u202e\"}").find("of type \"Poly\\u001B[31m\\ngon\\u202E\""),
+              std::string::npos);
+    // Two answer keys: refused, not judged by one of them.
+    EXPECT_NE(message(R"({"faces": [[0, 1, 2]], "rings": [[0, 1, 2]]})").find(R"(keys "faces" and "rings")"),
+              std::string::npos);
+    EXPECT_NE(message(R"({"faces": [], "polygons": []})", AnswerKind::Faces).find("give one of them"), std::string::npos);
+    // Duplicate keys are refused in objects whose members are ignored too.
+    EXPECT_NE(message(R"({"faces": [], "extra": {"a": 1, "a": 2}})").find(R"(duplicate key "a")"), std::string::npos);
     EXPECT_NE(message(R"({"polygons": [[[0, [1, 2]]]]})").find("both as vertex ids and as coordinates"), std::string::npos);
     EXPECT_NE(message(R"({"polygons": [[[[0, 0, 0, 0]]]]})").find("polygons[0][0][0]"), std::string::npos);
     EXPECT_NE(message(R"({"polygons": [{"holes": []}]})").find("missing key \"shell\""), std::string::npos);

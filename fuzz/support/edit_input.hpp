@@ -19,6 +19,9 @@ namespace dcel::fuzz {
 // A generated start map has at most this many vertices.
 constexpr std::size_t kMaxGeneratedVertices = 24;
 constexpr std::uint8_t kRawFlag = 4;  // flags bit 2: 16 raw bytes follow
+// flags bits 3-5 all set (one random flags byte in 8): a and b are wild ids
+// (testing::wild_id), any 32-bit id rather than one modulo the count.
+constexpr std::uint8_t kWildFlags = 0x38;
 constexpr std::size_t kStepBytes = 6;
 constexpr std::size_t kRawBytes = 16;
 
@@ -64,6 +67,7 @@ inline testing::Step read_step(Bytes& in) {
     s.y = in.byte() % 9 - 1;
     const std::uint8_t flags = in.byte();
     s.at = flags % 3;
+    s.wild = (flags & kWildFlags) == kWildFlags;
     if ((flags & kRawFlag) != 0) {
         s.raw = true;
         s.exact = {in.number(), in.number()};

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "dcel/error.hpp"
+#include "dcel/format.hpp"
 
 namespace dcel::cli {
 
@@ -18,21 +19,8 @@ std::string_view failure_name(FailureKind k) {
 }
 
 std::string printable(std::string_view text, std::size_t max_bytes) {
-    static constexpr char kHex[] = "0123456789abcdef";
-    std::string out;
-    for (const char c : text.substr(0, max_bytes)) {
-        const auto b = static_cast<unsigned char>(c);
-        if (c == '\n') {
-            out += "\\n";
-        } else if (b >= 0x20 && b < 0x7f) {
-            out += c;
-        } else {
-            out += "\\x";
-            out += kHex[b >> 4U];
-            out += kHex[b & 15U];
-        }
-    }
-    if (text.size() > max_bytes) out += "... (" + std::to_string(text.size()) + " bytes in all)";
+    std::string out = escape_for_message(text, max_bytes);
+    if (text.size() > max_bytes) out += " (" + std::to_string(text.size()) + " bytes in all)";
     return out;
 }
 

@@ -61,7 +61,8 @@ struct AnswerJudging {
 // "crash/11", "exit/3", "timeout", "unparsable".
 [[nodiscard]] std::string failure_key(const Outcome& o);
 
-// At most max_bytes of text, printable: other bytes as \xNN, newlines as \n.
+// At most max_bytes of a program's output, escaped as every message is
+// (dcel::escape_for_message), and how long it was when it is cut.
 [[nodiscard]] std::string printable(std::string_view text, std::size_t max_bytes);
 
 }  // namespace dcel::cli

@@ -96,6 +96,35 @@ void write_all(int fd, std::string_view text, const std::string& name) {
     }
 }
 
+// Watches the first bytes of a stream: whitespace and a leading UTF-8 BOM,
+// then one byte that either can start a JSON value or cannot.
+class JsonStart {
+public:
+    enum class Verdict : std::uint8_t { Undecided, MayBeJson, NotJson };
+    Verdict feed(std::string_view bytes) {
+        for (std::size_t i = 0; i < bytes.size() && verdict_ == Verdict::Undecided; ++i, ++offset_) {
+            const auto c = static_cast<unsigned char>(bytes[i]);
+            if (offset_ == 0 && c == kBom[0]) {
+                bom_ = 1;
+            } else if (bom_ == 1 || bom_ == 2) {  // inside a BOM, or not a BOM after all
+                if (c != kBom[bom_]) verdict_ = Verdict::NotJson;
+                ++bom_;
+            } else if (c != ' ' && c != '\n' && c != '\r' && c != '\t') {
+                const bool starts_value = c == '{' || c == '[' || c == '"' || c == '-' || (c >= '0' && c <= '9') ||
+                                          c == 't' || c == 'f' || c == 'n';
+                verdict_ = starts_value ? Verdict::MayBeJson : Verdict::NotJson;
+            }
+        }
+        return verdict_;
+    }
+
+private:
+    static constexpr unsigned char kBom[3] = {0xEF, 0xBB, 0xBF};
+    Verdict verdict_ = Verdict::Undecided;
+    std::size_t offset_ = 0;
+    std::size_t bom_ = 0;  // BOM bytes seen at the start
+};
+
 }  // namespace
 
 void set_max_input_bytes(std::uint64_t bytes) { max_input = bytes; }
@@ -141,15 +170,25 @@ std::string read_input(const std::string& path) {
     std::vector<std::unique_ptr<char[]>> chunks;
     std::vector<std::size_t> sizes;
     std::size_t chunk = std::size_t{64} << 10;
-    for (;;) {
+    // Whether the first byte after whitespace (and a BOM) can start a JSON
+    // value is known as soon as it arrives: a stream that cannot be JSON
+    // (/dev/zero, a binary) is cut there, and the parser reports that byte,
+    // as it would at the end of the whole stream, without holding it all.
+    JsonStart start;
+    for (bool cut = false; !cut;) {
         auto buffer = std::make_unique<char[]>(chunk);  // NOLINT(cppcoreguidelines-avoid-c-arrays)
         std::size_t filled = 0;
         while (filled < chunk) {
             const ssize_t n = read_some(fd.get(), buffer.get() + filled, chunk - filled);
             if (n < 0) fail_read(errno);
             if (n == 0) break;
+            const std::string_view got(buffer.get() + filled, static_cast<std::size_t>(n));
             filled += static_cast<std::size_t>(n);
             total += static_cast<std::uint64_t>(n);
+            if (start.feed(got) == JsonStart::Verdict::NotJson) {
+                cut = true;
+                break;
+            }
             if (total > max_input) throw_too_large(name, total, false);
             StatusLine::progress(total);
         }

@@ -14,6 +14,7 @@ Usage: hostile.py DCEL SOURCE_DIR SECTION [--slow FACTOR]
            parallel); --slow multiplies the time and memory limits (for
            sanitizer, coverage and unoptimized builds).
 """
+import contextlib
 import os
 import re
 import shutil
@@ -165,33 +166,70 @@ def case(name, args, code, err, *, stdin=None, stdout=None, out=None, seconds=10
 # ---------------------------------------------------------------- sections
 
 
+@contextlib.contextmanager
+def endless_whitespace():
+    """A FIFO whose writer sends blanks until it is killed: a stream that
+    could still turn into a JSON document however much of it is read."""
+    path = os.path.join(TMP, "endless.fifo")
+    if os.path.exists(path):
+        os.unlink(path)
+    os.mkfifo(path)
+    writer = subprocess.Popen(["sh", "-c", 'exec yes " " > "$0"', path], stderr=subprocess.DEVNULL)
+    try:
+        yield path
+    finally:
+        writer.kill()
+        writer.wait()
+
+
 def inputs():
     """Unbounded, unreadable and strange inputs: refused with exit 2 and the
     OS's reason, in bounded memory."""
     over = r"; raise it with dcel --max-input-bytes N"
-    case("dev-zero-default-limit", ["faces", "/dev/zero"], 2,
-         r"dcel: /dev/zero holds more than 536870912 bytes \(512 MiB\), the input limit" + over,
-         seconds=20, mib=600)
-    case("dev-zero-small-limit", ["--max-input-bytes", "4M", "faces", "/dev/zero"], 2,
-         r"dcel: /dev/zero holds more than 4194304 bytes \(4 MiB\), the input limit" + over)
-    case("stdin-dev-zero", ["faces", "--max-input-bytes", "4M"], 2,
-         r"dcel: <stdin> holds more than 4194304 bytes \(4 MiB\), the input limit" + over, stdin="/dev/zero")
+    # A stream whose first byte cannot start JSON is refused at that byte,
+    # at once and in little memory, not read to the limit first.
+    case("dev-zero", ["faces", "/dev/zero"], 1,
+         r"dcel: /dev/zero: line 1, column 1: unexpected control character U\+0000: expected a JSON value",
+         seconds=2, mib=20)
+    case("stdin-dev-zero", ["faces"], 1,
+         r"dcel: <stdin>: line 1, column 1: unexpected control character U\+0000: expected a JSON value",
+         stdin="/dev/zero", seconds=2, mib=20)
+    case("check-answer-dev-zero", ["check", SQUARE, "/dev/zero"], 1, None,
+         out=r"unreadable-answer: ANSWER /dev/zero: line 1, column 1: unexpected control character U\+0000",
+         seconds=2, mib=20)
+    # A stream that may still become JSON (endless whitespace) is read up
+    # to the input limit, then refused with exit 2.
+    with endless_whitespace() as stream:
+        case("endless-default-limit", ["faces", stream], 2,
+             r"dcel: .*/endless\.fifo holds more than 536870912 bytes \(512 MiB\), the input limit" + over,
+             seconds=20, mib=600)
+    with endless_whitespace() as stream:
+        case("endless-small-limit", ["--max-input-bytes", "4M", "faces", stream], 2,
+             r"dcel: .*/endless\.fifo holds more than 4194304 bytes \(4 MiB\), the input limit" + over)
+    with endless_whitespace() as stream:
+        case("stdin-endless", ["faces", "--max-input-bytes", "4M"], 2,
+             r"dcel: <stdin> holds more than 4194304 bytes \(4 MiB\), the input limit" + over, stdin=stream)
     big = tmpfile("big.json", b" " * (3 * MIB) + b"{}")
     case("regular-file-over-limit", ["--max-input-bytes", "1M", "faces", big], 2,
          r"dcel: .*/big\.json is 3145730 bytes, over the input limit of 1048576 bytes \(1 MiB\)" + over,
          mib=20)
-    case("points-dev-zero", ["--max-input-bytes", "1M", "locate", MAP, "--points", "/dev/zero"], 2,
-         r"dcel: /dev/zero holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
-    case("names-dev-zero", ["--max-input-bytes", "1M", "stab", MAP, "0", "0", "1", "1", "--names", "/dev/zero"], 2,
-         r"dcel: /dev/zero holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
-    case("script-dev-zero", ["--max-input-bytes", "1M", "edit", MAP, "/dev/zero"], 2,
-         r"dcel: /dev/zero holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
+    with endless_whitespace() as stream:
+        case("points-endless", ["--max-input-bytes", "1M", "locate", MAP, "--points", stream], 2,
+             r"dcel: .*/endless\.fifo holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
+    with endless_whitespace() as stream:
+        case("names-endless", ["--max-input-bytes", "1M", "stab", MAP, "0", "0", "1", "1", "--names", stream], 2,
+             r"dcel: .*/endless\.fifo holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
+    with endless_whitespace() as stream:
+        case("script-endless", ["--max-input-bytes", "1M", "edit", MAP, stream], 2,
+             r"dcel: .*/endless\.fifo holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
     # check's GRAPH is the caller's mistake (exit 2); an unreadable ANSWER is
     # reported as a difference (exit 1), the reason kept.
-    case("check-graph-dev-zero", ["--max-input-bytes", "1M", "check", "/dev/zero", SQUARE], 2,
-         r"dcel: GRAPH: /dev/zero holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
-    case("check-answer-dev-zero", ["--max-input-bytes", "1M", "check", SQUARE, "/dev/zero"], 1, None,
-         out=r"unreadable-answer: ANSWER: /dev/zero holds more than 1048576 bytes")
+    with endless_whitespace() as stream:
+        case("check-graph-endless", ["--max-input-bytes", "1M", "check", stream, SQUARE], 2,
+             r"dcel: GRAPH: .*/endless\.fifo holds more than 1048576 bytes \(1 MiB\), the input limit" + over)
+    with endless_whitespace() as stream:
+        case("check-answer-endless", ["--max-input-bytes", "1M", "check", SQUARE, stream], 1, None,
+             out=r"unreadable-answer: ANSWER: .*/endless\.fifo holds more than 1048576 bytes")
     case("directory", ["faces", TMP], 2, r"dcel: cannot read .*dcel-hostile-.*: Is a directory")
     case("directory-on-stdin", ["faces"], 2, r"dcel: cannot read <stdin>: Is a directory", stdin=TMP)
     case("check-graph-directory", ["check", TMP, SQUARE], 2, r"dcel: GRAPH: cannot read .*: Is a directory")
@@ -221,7 +259,7 @@ def inputs():
     # gets SIGPIPE), and one that writes a graph: read like a file.
     flood = os.path.join(TMP, "flood.fifo")
     os.mkfifo(flood)
-    writer = subprocess.Popen(["sh", "-c", 'exec cat /dev/zero > "$0"', flood], stderr=subprocess.DEVNULL)
+    writer = subprocess.Popen(["sh", "-c", 'exec yes " " > "$0"', flood], stderr=subprocess.DEVNULL)
     case("fifo-flood", ["--max-input-bytes", "2M", "faces", flood], 2,
          r"dcel: .*/flood\.fifo holds more than 2097152 bytes \(2 MiB\), the input limit" + over)
     writer.kill()
@@ -286,7 +324,11 @@ def messages():
     case("script-name-with-controls", ["edit", MAP, script], 1,
          r'dcel: .*: names: the point \(4, 0\) for "x\\u001Bq" is at v1, not inside a face; give a point inside it')
     graph = tmpfile("keys.json", '{"vertices": [], "edges": [], "\\u001b": 1, "\\u001b": 2}')
-    case("json-key-with-controls", ["faces", graph], 0, None)  # unknown keys are ignored, duplicates too
+    case("json-key-with-controls", ["faces", graph], 1,  # unknown keys are ignored, but not given twice
+         r'dcel: .*/keys\.json: top level: duplicate key "\\u001B" at line 1, column 44: give each key once')
+    graph = tmpfile("nested_keys.json", '{"vertices": [], "edges": [], "x": {"properties": {"a": 1, "a": 2}}}')
+    case("json-duplicate-key-in-ignored-object", ["faces", graph], 1,
+         r'dcel: .*/nested_keys\.json: x\.properties: duplicate key "a" at line 1, column 60: give each key once')
     graph = tmpfile("dupkey.json", '{"vertices": [], "edges": [], "edges": []}')
     case("json-duplicate-key", ["faces", graph], 1,
          r'dcel: .*/dupkey\.json: top level: duplicate key "edges" at line 1, column 31: give each key once')

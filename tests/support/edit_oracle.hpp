@@ -33,13 +33,33 @@ struct Step {
     int at = 0;   // for a new point: 0 the point (x, y); 1 vertex b's point; 2 the middle of edge b
     Point exact;  // when `raw` is set, the point itself, overriding (x, y) (used by the fuzzer)
     bool raw = false;
+    // a and b name ids as they are, not modulo the count: any 32-bit id,
+    // out of range ones included (wild_id), so that refusals of bad ids are
+    // exercised too (used by the fuzzer).
+    bool wild = false;
 };
+
+// A wild step's id from its byte: ids just past the end, far past it, the
+// null id and its neighbours, the 31-bit edge limit, or the byte itself.
+inline std::uint32_t wild_id(std::uint32_t byte, std::uint32_t count) {
+    switch (byte % 8) {
+        case 0: return count;
+        case 1: return count + byte / 8;
+        case 2: return kNoIndex;
+        case 3: return kNoIndex - 1;
+        case 4: return std::uint32_t{1} << 31U;
+        case 5: return (std::uint32_t{1} << 31U) - 1;
+        case 6: return kNoIndex - byte / 8;
+        default: return byte / 8;
+    }
+}
 
 inline std::ostream& operator<<(std::ostream& os, const Step& s) {
     static constexpr const char* kNames[] = {"add_vertex",  "add_edge",      "add_edge_to_point", "split_edge",
                                              "remove_edge", "remove_vertex", "merge_edges"};
     os << kNames[static_cast<int>(s.op)] << "(a=" << s.a << " b=" << s.b << " x=" << s.x << " y=" << s.y << " at=" << s.at;
     if (s.raw) os << " exact=(" << s.exact.x << ", " << s.exact.y << ")";
+    if (s.wild) os << " wild";
     return os << ")";
 }
 
@@ -62,6 +82,7 @@ inline Point split_point(const Dcel& d, EdgeId e, const Step& s) {
 // element of the kind the step needs.
 struct Resolved {
     bool applicable = false;
+    bool ids_in_range = true;  // false only for a wild step naming an id past the end
     VertexId u;
     VertexId v;
     EdgeId e;
@@ -86,6 +107,13 @@ inline Resolved resolve(const Dcel& d, const Step& s) {
         case Op::AddEdgeToPoint:
         case Op::RemoveVertex:
         case Op::MergeEdges:
+            if (s.wild) {
+                r.u = VertexId(wild_id(s.a, nv));
+                r.v = VertexId(wild_id(s.b, nv));
+                r.ids_in_range = r.u.index() < nv && (s.op != Op::AddEdge || r.v.index() < nv);
+                r.applicable = true;
+                break;
+            }
             if (nv == 0) return r;
             r.u = VertexId(s.a % nv);
             r.v = VertexId(s.b % nv);
@@ -93,6 +121,13 @@ inline Resolved resolve(const Dcel& d, const Step& s) {
             break;
         case Op::SplitEdge:
         case Op::RemoveEdge:
+            if (s.wild) {
+                r.e = EdgeId(wild_id(s.a, ne));
+                r.ids_in_range = r.e.index() < ne;
+                r.applicable = true;
+                if (s.op == Op::SplitEdge && r.ids_in_range) r.p = split_point(d, r.e, s);
+                break;
+            }
             if (ne == 0) return r;
             r.e = EdgeId(s.a % ne);
             if (s.op == Op::SplitEdge) r.p = split_point(d, r.e, s);
@@ -125,6 +160,7 @@ inline bool inside_edge_by_build(const PlanarGraph& g, Point p, EdgeId e) {
 
 // The oracle: must this step succeed on d?
 inline bool expected_valid(const Dcel& d, const Step& s, const Resolved& r) {
+    if (!r.ids_in_range) return false;  // an id past the end is refused, whatever the edit
     const PlanarGraph g = to_graph(d);
     switch (s.op) {
         case Op::AddVertex: {

@@ -4,9 +4,11 @@
 // first numbers sit.
 #include <array>
 #include <string>
+#include <vector>
 
 #include "dcel/check/answer.hpp"
 #include "dcel/error.hpp"
+#include "dcel/format.hpp"
 #include "dcel/io/dcel_json.hpp"
 #include "dcel/io/json_reader.hpp"
 
@@ -150,9 +152,7 @@ public:
                         r.begin_array("MultiPolygon coordinates: an array of polygons");
                         while (r.next_element()) ring_list(r);
                     } else {
-                        r.fail(InputErrorKind::Shape, "a GeoJSON " + type +
-                                                          " is not a polygon answer (expected Polygon, MultiPolygon, "
-                                                          "Feature, FeatureCollection or GeometryCollection)");
+                        fail_not_polygonal(r, type);
                     }
                     break;
                 case 2:
@@ -172,13 +172,18 @@ public:
         const bool polygonal = type == "Polygon" || type == "MultiPolygon";
         if (polygonal && (seen & 2U) == 0) r.fail_missing_key("coordinates", "a GeoJSON " + type);
         if (!polygonal && type != "Feature" && type != "FeatureCollection" && type != "GeometryCollection") {
-            r.fail(InputErrorKind::Shape, "a GeoJSON " + type +
-                                              " is not a polygon answer (expected Polygon, MultiPolygon, Feature, "
-                                              "FeatureCollection or GeometryCollection)");
+            fail_not_polygonal(r, type);
         }
     }
 
 private:
+    // The type is the answer's text: quoted and escaped, never echoed raw.
+    [[noreturn]] static void fail_not_polygonal(const JsonReader& r, const std::string& type) {
+        r.fail(InputErrorKind::Shape, "a GeoJSON object of type " + quote_for_message(type) +
+                                          " is not a polygon answer (expected Polygon, MultiPolygon, Feature, "
+                                          "FeatureCollection or GeometryCollection)");
+    }
+
     void decide_like(const RegionReader& other) {
         decided_ = other.decided_;
         out_.by_points = other.out_.by_points;
@@ -326,26 +331,56 @@ struct Detected {
 // down the first elements ([[0, 1]] is faces; [[[0, 1, 2]]] polygons of id
 // rings; [[[0, 0], [1, 0], [0, 1]]] rings of coordinates, since a ring of two
 // ids is no ring; [[[[0, 0], ...]]] polygons of coordinate rings).
+// The answer keys of a top-level object: "faces", "half_edges",
+// "polygons", "rings" and GeoJSON's "type" (a dump's own "faces" member
+// does not count). An object may hold one: with two, which one answers is
+// anybody's guess, so it is refused rather than judged by one of them.
+struct AnswerKeys {
+    bool faces = false, dump = false, polygons = false, rings = false, type = false;
+};
+
+AnswerKeys answer_keys(std::string_view text) {
+    AnswerKeys k;
+    JsonReader r(text);
+    r.begin_object("an answer");
+    while (r.next_member()) {
+        const std::string_view key = r.key();
+        k.dump = k.dump || key == "half_edges";
+        k.faces = k.faces || key == "faces";
+        k.polygons = k.polygons || key == "polygons";
+        k.rings = k.rings || key == "rings";
+        k.type = k.type || key == "type";
+        r.skip_value();
+    }
+    r.end_document();
+    std::vector<std::string_view> present;
+    if (k.dump) present.emplace_back("\"half_edges\"");
+    if (k.faces && !k.dump) present.emplace_back("\"faces\"");
+    if (k.polygons) present.emplace_back("\"polygons\"");
+    if (k.rings) present.emplace_back("\"rings\"");
+    if (k.type) present.emplace_back("GeoJSON's \"type\"");
+    if (present.size() > 1) {
+        std::string keys;
+        for (std::size_t i = 0; i < present.size(); ++i) {
+            keys += i == 0 ? "" : (i + 1 == present.size() ? " and " : ", ");
+            keys += present[i];
+        }
+        throw InvalidInput(InputErrorKind::Shape, "top level: the object has the keys " + keys +
+                                                      ", each of which is a whole answer; give one of them");
+    }
+    return k;
+}
+
 Detected detect(std::string_view text) {
     JsonReader r(text);
     const JsonType top = r.peek();
     if (top == JsonType::Object) {
-        bool faces = false, dump = false, polygons = false, rings = false, type = false;
-        r.begin_object("an answer");
-        while (r.next_member()) {
-            const std::string_view k = r.key();
-            dump = dump || k == "half_edges";
-            faces = faces || k == "faces";
-            polygons = polygons || k == "polygons";
-            rings = rings || k == "rings";
-            type = type || k == "type";
-            r.skip_value();
-        }
-        if (dump) return {AnswerKind::Dump, "an object with a \"half_edges\" key"};
-        if (faces) return {AnswerKind::Faces, "an object with a \"faces\" key"};
-        if (polygons) return {AnswerKind::Polygons, "an object with a \"polygons\" key"};
-        if (rings) return {AnswerKind::Rings, "an object with a \"rings\" key"};
-        if (type) return {AnswerKind::Polygons, "a GeoJSON object"};
+        const AnswerKeys k = answer_keys(text);
+        if (k.dump) return {AnswerKind::Dump, "an object with a \"half_edges\" key"};
+        if (k.faces) return {AnswerKind::Faces, "an object with a \"faces\" key"};
+        if (k.polygons) return {AnswerKind::Polygons, "an object with a \"polygons\" key"};
+        if (k.rings) return {AnswerKind::Rings, "an object with a \"rings\" key"};
+        if (k.type) return {AnswerKind::Polygons, "a GeoJSON object"};
         throw InvalidInput(InputErrorKind::Shape,
                            "top level: an object answer needs a \"faces\", \"half_edges\", \"polygons\" or \"rings\" "
                            "key, or a GeoJSON \"type\"");
@@ -412,6 +447,7 @@ Answer read_answer(std::string_view text, std::optional<AnswerKind> kind) {
     if (kind) {
         a.kind = *kind;
         a.fits = {*kind};
+        if (JsonReader(text).peek() == JsonType::Object) (void)answer_keys(text);
     } else {
         Detected d = detect(text);
         a.kind = d.kind;

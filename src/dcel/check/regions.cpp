@@ -24,6 +24,7 @@
 #include "dcel/check/answer.hpp"
 #include "dcel/check/collector.hpp"
 #include "dcel/check/cycles.hpp"
+#include "dcel/contracts.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/area.hpp"
 
@@ -230,20 +231,19 @@ private:
             vs.pop_back();
             ++closed;
         }
-        if (vs.size() < 3) {
-            if (out_.wants(DifferenceKind::ExtraPolygon)) {
-                out_.add(DifferenceKind::ExtraPolygon,
-                         ring_label(p, r) + " has " + std::to_string(vs.size()) +
-                             (vs.size() == 1 ? " vertex" : " vertices") + ": a ring needs at least three",
-                         vs);
-            }
-            ok = false;
-        }
+        // No minimum length: [u, v] walks u->v and back, which cancel, exactly
+        // as [u, v, u, v] and a there-and-back path do; a ring of one point
+        // (or none) is a closed walk of no steps. Equivalent spellings of a
+        // boundary get the same verdict.
         return vs;
     }
 
     MappedRing map_ring(std::size_t p, std::size_t r, const std::vector<Index>& vs) {
         MappedRing m;
+        if (vs.size() < 2) {  // a closed walk of no steps: no half-edges, no area
+            m.ok = true;
+            return m;
+        }
         for (std::size_t j = 0; j < vs.size(); ++j) {
             const Index u = vs[j], v = vs[(j + 1) % vs.size()];
             const HalfEdgeId h = ref_.find(u, v);
@@ -299,6 +299,18 @@ private:
             }
             return;
         }
+        // A face's boundary walks each half-edge once; a sum that walks one
+        // twice (a ring listed twice, rings that overlap) is no face, and
+        // none of the comparisons below, which treat chains as sets, applies.
+        if (const std::string twice = repeated_text(chain); !twice.empty()) {
+            if (out_.wants(DifferenceKind::ExtraPolygon)) {
+                out_.add(DifferenceKind::ExtraPolygon,
+                         shown + " walks " + twice + " more than once (a ring listed twice, or rings that overlap); "
+                                 "a face's boundary walks each half-edge once",
+                         shell);
+            }
+            return;
+        }
         if (const auto it = face_of_chain_.find(chain); it != face_of_chain_.end()) {
             const Index f = it->second;
             if (polygon_of_face[f] == kNoIndex) {
@@ -343,12 +355,34 @@ private:
         }
     }
 
+    // The half-edges a sorted chain holds more than once ("v5->v4, v4->v6"),
+    // or "" when it holds each once.
+    std::string repeated_text(const Chain& chain) const {
+        constexpr std::size_t kShown = 12;
+        std::string s;
+        std::size_t shown = 0, repeated = 0;
+        for (std::size_t i = 1; i < chain.size(); ++i) {
+            if (chain[i] != chain[i - 1] || (i >= 2 && chain[i - 2] == chain[i])) continue;
+            ++repeated;
+            if (shown++ < kShown) s += (s.empty() ? "" : ", ") + half_edge_text(HalfEdgeId(chain[i]));
+        }
+        if (repeated > kShown) s += ", ... (" + std::to_string(repeated) + " half-edges)";
+        return s;
+    }
+
+    std::string half_edge_text(HalfEdgeId h) const {
+        return "v" + std::to_string(d_.origin(h).index()) + "->v" + std::to_string(d_.target(h).index());
+    }
+
     // What `full` has that `part` lacks: the half-edges, and whether they lie
-    // on the face's outer cycle or on its holes.
+    // on the face's outer cycle or on its holes. `part` is a proper subset of
+    // `full` (match() calls it for a chain of distinct half-edges, all on
+    // `full`, that is not `full`), so something is lacking.
     std::string missing_text(const Chain& full, const Chain& part) const {
         constexpr std::size_t kShown = 12;
         Chain lacking;
         std::set_difference(full.begin(), full.end(), part.begin(), part.end(), std::back_inserter(lacking));
+        DCEL_ASSERT(!lacking.empty());
         const Index outer = ref_.cycle_of(d_.outer(d_.face(HalfEdgeId(lacking.front()))));
         const bool on_outer = std::any_of(lacking.begin(), lacking.end(),
                                           [&](Index h) { return ref_.cycle_of(HalfEdgeId(h)) == outer; });
@@ -361,9 +395,7 @@ private:
                                              : "edges of its holes";
         s += ": ";
         for (std::size_t i = 0; i < std::min(kShown, lacking.size()); ++i) {
-            const HalfEdgeId h(lacking[i]);
-            s += (i == 0 ? "v" : ", v") + std::to_string(d_.origin(h).index()) + "->v" +
-                 std::to_string(d_.target(h).index());
+            s += (i == 0 ? "" : ", ") + half_edge_text(HalfEdgeId(lacking[i]));
         }
         if (lacking.size() > kShown) s += ", ... (" + std::to_string(lacking.size()) + " half-edges)";
         return s;

@@ -556,7 +556,39 @@ bool JsonReader::next_member() {
         fail_unexpected(pos_, "':' after the key " + quoted_key(key_));
     }
     ++pos_;
+    remember_key();
     return true;
+}
+
+namespace {
+// Up to this many keys an object's keys are compared one by one; past it
+// they go into a hash set.
+constexpr std::size_t kLinearKeys = 16;
+}  // namespace
+
+void JsonReader::remember_key() {
+    Frame& f = frames_[depth_ - 1];
+    std::string_view k = key_;
+    if (f.key_escaped) k = arena_.emplace_back(key_);
+    const auto mine = keys_.begin() + static_cast<std::ptrdiff_t>(f.keys_begin);
+    if (f.key_set) {
+        if (!key_sets_[depth_ - 1].insert(k).second) fail_duplicate_key();
+    } else {
+        if (std::find(mine, keys_.end(), k) != keys_.end()) fail_duplicate_key();
+        if (static_cast<std::size_t>(keys_.end() - mine) == kLinearKeys) {
+            if (key_sets_.size() < depth_) key_sets_.resize(depth_);
+            key_sets_[depth_ - 1].insert(mine, keys_.end());
+            key_sets_[depth_ - 1].insert(k);
+            f.key_set = true;
+        }
+    }
+    keys_.push_back(k);
+}
+
+void JsonReader::forget_keys(const Frame& f) {
+    keys_.resize(f.keys_begin);
+    while (arena_.size() > f.arena_begin) arena_.pop_back();
+    if (f.key_set) key_sets_[depth_].clear();  // depth_ is already this frame's index
 }
 
 int JsonReader::next_known_member(std::span<const std::string_view> known, std::uint64_t& seen) {

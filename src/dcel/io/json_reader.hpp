@@ -55,9 +55,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <deque>
 #include <span>
 #include <string>
 #include <string_view>
+#include <unordered_set>
+#include <vector>
+
 #include "dcel/contracts.hpp"
 
 #include "dcel/error.hpp"
@@ -171,8 +175,11 @@ private:
         std::uint64_t count = 0;    // elements or members begun so far
         std::size_t key_begin = 0;  // raw (escaped) key of the current member
         std::size_t key_end = 0;
+        std::size_t keys_begin = 0;   // objects: this object's keys are keys_[keys_begin, ...)
+        std::size_t arena_begin = 0;  // and its escaped keys' copies arena_[arena_begin, ...)
         bool object = false;
         bool key_escaped = false;
+        bool key_set = false;  // key_sets_[depth] holds this object's keys (an object of many)
     };
 
     static constexpr bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
@@ -188,8 +195,14 @@ private:
     }
     void open(bool object);  // at '[' or '{': consume it, push a frame
     void close() {           // pop a frame (the bracket is consumed)
-        last_closed_count_ = frames_[--depth_].count;
+        const Frame& f = frames_[--depth_];
+        last_closed_count_ = f.count;
+        if (f.object) forget_keys(f);
     }
+    // Duplicate keys are refused in every object, whether its caller reads
+    // the member or skips it: each open object's keys are kept until it closes.
+    void remember_key();
+    void forget_keys(const Frame& f);
 
     // The out-of-line halves of the inline fast paths: they start over at pos_.
     [[nodiscard]] JsonType peek_slow();
@@ -212,6 +225,12 @@ private:
     std::uint64_t last_closed_count_ = 0;  // element count of the container closed last
     std::string_view key_;
     std::string key_buffer_;  // key_ when the raw key has escapes
+    // The keys of the open objects (views into text_ or arena_), compared
+    // one by one in a small object and through key_sets_[depth] in a large
+    // one, so that a hostile object of n keys costs O(n), not O(n^2).
+    std::vector<std::string_view> keys_;
+    std::deque<std::string> arena_;  // unescaped copies of escaped keys (a deque: stable addresses)
+    std::vector<std::unordered_set<std::string_view>> key_sets_;
 };
 
 // ---- Inline fast paths (the per-number and per-element work of large
@@ -223,6 +242,11 @@ DCEL_JSON_HOT inline void JsonReader::open(bool object) {
     Frame& f = frames_[depth_++];
     f.count = 0;
     f.object = object;
+    if (object) {
+        f.keys_begin = keys_.size();
+        f.arena_begin = arena_.size();
+        f.key_set = false;
+    }
 }
 
 DCEL_JSON_HOT inline JsonType JsonReader::peek() {

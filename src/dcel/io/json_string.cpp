@@ -2,12 +2,24 @@
 
 #include <cstdio>
 
+#include "dcel/core/utf8.hpp"
+
 namespace dcel::io {
 
 std::string json_string(std::string_view s) {
     std::string out = "\"";
     out.reserve(s.size() + 2);
-    for (const char c : s) {
+    for (std::size_t i = 0; i < s.size();) {
+        const std::size_t len = detail::utf8_sequence(s, i);
+        if (len == 0) {
+            // JSON text is UTF-8 (RFC 8259, section 8.1): a byte that is not
+            // part of a well-formed sequence (a program's output may hold
+            // any) becomes U+FFFD, so that the document always parses.
+            out += "\ufffd";
+            ++i;
+            continue;
+        }
+        const char c = s[i];
         const auto byte = static_cast<unsigned char>(c);
         switch (c) {
             case '"': out += "\\\""; break;
@@ -20,9 +32,10 @@ std::string json_string(std::string_view s) {
                     std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(byte));
                     out += buf;
                 } else {
-                    out += c;
+                    out.append(s.substr(i, len));
                 }
         }
+        i += len;
     }
     return out + "\"";
 }
