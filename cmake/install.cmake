@@ -1,38 +1,68 @@
 # Install rules, the CMake package and the pkg-config file (included last by
-# the top-level CMakeLists.txt, so every target below exists by then):
-#   include/dcel/**.hpp                 the public headers (src/dcel/public-headers.txt)
-#   lib/libdcel.a                       dcel::dcel, always
-#   lib/libdcel_gen.a                   dcel::gen (and dcel::check_testing), when built
+# the top-level CMakeLists.txt, so every target below exists by then). Each
+# component installs its library and exactly the headers of its folder's
+# public-headers.txt (scripts/check-layers checks the lists):
+#   include/dcel/...                    dcel::dcel, dcel::io, dcel::check: always
+#   lib/libdcel.a, libdcel_io.a, libdcel_check.a
+#   include/dcel/gen/, include/dcel/testing/   with lib/libdcel_gen.a, when built:
+#                                       dcel::gen and the header-only dcel::testing
 #   bin/dcel                            dcel::cli, when built
 #   lib/cmake/dcel/dcelConfig.cmake     find_package(dcel CONFIG), with
 #   lib/cmake/dcel/dcelConfigVersion.cmake  (SameMajorVersion) and
 #   lib/cmake/dcel/dcel*Targets*.cmake  the targets, in namespace dcel::
 #   lib/pkgconfig/dcel.pc               pkg-config --cflags --libs dcel
+# The diff engine (dcel_diff) is internal to the CLI and never installed.
 #
-# The generators and the CLI are optional parts: `cmake --build B --target dcel`
+# The generators and the CLI are optional parts: `cmake --build B --target dcel_check`
 # followed by `cmake --install B` installs the library alone. Each optional
 # part has its own export set, installed with OPTIONAL, and dcelConfig.cmake
 # loads a part's targets only when its file was installed (so
-# find_package(dcel COMPONENTS cli) fails cleanly when the CLI is absent).
+# find_package(dcel COMPONENTS cli) fails cleanly when the CLI is absent); an
+# optional part's headers are installed only with its library.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(dcel_cmake_dir ${CMAKE_INSTALL_LIBDIR}/cmake/dcel)
 
-# The library and its public headers (src/dcel/public-headers.txt, the list
-# that scripts/check-layers enforces); internal headers stay in the source tree.
+# dcel_install_headers(FOLDER): the headers listed in
+# src/FOLDER/public-headers.txt (paths relative to src/).
+function(dcel_install_headers folder)
+  file(STRINGS ${PROJECT_SOURCE_DIR}/src/${folder}/public-headers.txt headers REGEX "^dcel/")
+  foreach(header IN LISTS headers)
+    get_filename_component(header_dir ${header} DIRECTORY)
+    install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${header_dir})
+  endforeach()
+endfunction()
+
+# dcel_install_headers_with(TARGET FOLDER...): the headers of the folders'
+# lists, at install time, only when TARGET's library file has been installed.
+function(dcel_install_headers_with target)
+  set(code "")
+  foreach(folder IN LISTS ARGN)
+    file(STRINGS ${PROJECT_SOURCE_DIR}/src/${folder}/public-headers.txt headers REGEX "^dcel/")
+    foreach(header IN LISTS headers)
+      get_filename_component(header_dir ${header} DIRECTORY)
+      string(APPEND code "  file(INSTALL DESTINATION \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_INCLUDEDIR}/${header_dir}\" "
+                         "TYPE FILE FILES \"${PROJECT_SOURCE_DIR}/src/${header}\")\n")
+    endforeach()
+  endforeach()
+  install(CODE "if(EXISTS \"\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/$<TARGET_FILE_NAME:${target}>\")\n${code}endif()")
+endfunction()
+
+# The library: the core, io and check, and their public headers; internal
+# headers stay in the source tree.
 set_target_properties(dcel PROPERTIES EXPORT_NAME dcel)
-install(TARGETS dcel
+set_target_properties(dcel_io PROPERTIES EXPORT_NAME io)
+set_target_properties(dcel_check PROPERTIES EXPORT_NAME check)
+install(TARGETS dcel dcel_io dcel_check
   EXPORT dcelTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT dcelTargets NAMESPACE dcel:: DESTINATION ${dcel_cmake_dir})
-file(STRINGS ${PROJECT_SOURCE_DIR}/src/dcel/public-headers.txt dcel_public_headers REGEX "^dcel/")
-foreach(header IN LISTS dcel_public_headers)
-  get_filename_component(header_dir ${header} DIRECTORY)
-  install(FILES ${PROJECT_SOURCE_DIR}/src/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${header_dir})
-endforeach()
+dcel_install_headers(dcel)
+dcel_install_headers(dcel/io)
+dcel_install_headers(dcel/check)
 
 # dcel_optional_part(NAME TARGET... ) installs the targets (the first one has
 # a file; the others may be INTERFACE libraries riding along) in the export
@@ -76,15 +106,21 @@ endfunction()
 if(TARGET dcel_gen)
   set_target_properties(dcel_gen PROPERTIES EXPORT_NAME gen)
 endif()
-if(TARGET dcel_check_testing)
-  # The header-only GoogleTest/RapidCheck helpers, which need dcel::gen.
-  set_target_properties(dcel_check_testing PROPERTIES EXPORT_NAME check_testing)
+if(TARGET dcel_testing)
+  # The header-only GoogleTest/RapidCheck/libFuzzer helpers, which need dcel::gen.
+  set_target_properties(dcel_testing PROPERTIES EXPORT_NAME testing)
 endif()
 if(TARGET dcel_cli)
   set_target_properties(dcel_cli PROPERTIES EXPORT_NAME cli)
 endif()
-dcel_optional_part(Gen dcel_gen dcel_check_testing)
+dcel_optional_part(Gen dcel_gen dcel_testing)
 dcel_optional_part(Cli dcel_cli)
+# The generators' and the helpers' headers only with the generators' library
+# (installed just above, or not, by the OPTIONAL rule): an install of the
+# library alone ships no header that cannot link.
+if(TARGET dcel_gen)
+  dcel_install_headers_with(dcel_gen dcel/gen dcel/testing)
+endif()
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/dcelConfig.cmake.in
   ${PROJECT_BINARY_DIR}/dcelConfig.cmake

@@ -43,7 +43,7 @@
 namespace dcel::fuzz {
 namespace {
 
-using testing::Step;
+using test_support::Step;
 
 // Each step costs a rebuild, a validation and an oracle build of a graph of
 // at most a few hundred elements; 64 steps keep an input well under a
@@ -54,9 +54,9 @@ constexpr int kMaxSteps = 64;
 // One step: the verdict against the oracle, then the state against the
 // model. `model` is the graph the DCEL must hold, updated on success.
 void check_step(Dcel& d, PlanarGraph& model, const Step& s, int index) {
-    const testing::Resolved r = testing::resolve(d, s);
+    const test_support::Resolved r = test_support::resolve(d, s);
     if (!r.applicable) return;
-    const bool valid = testing::expected_valid(d, s, r);
+    const bool valid = test_support::expected_valid(d, s, r);
     const DcelDump before = to_dump(d);
     const std::size_t faces_before = d.num_faces();
     Change change;
@@ -64,7 +64,7 @@ void check_step(Dcel& d, PlanarGraph& model, const Step& s, int index) {
     bool bad_index = false;
     std::string reason;
     try {
-        change = testing::apply(d, s, r);
+        change = test_support::apply(d, s, r);
     } catch (const TopologyError& e) {
         refused = true;
         reason = e.what();
@@ -78,10 +78,10 @@ void check_step(Dcel& d, PlanarGraph& model, const Step& s, int index) {
     FUZZ_CHECK(r.ids_in_range || bad_index,
                "step " << index << " " << s << ": an id past the end was not refused as a bad index: " << reason);
     if (refused) {
-        FUZZ_CHECK(testing::same_dump(before, to_dump(d)), "step " << index << " " << s << ": a refusal changed the DCEL");
+        FUZZ_CHECK(test_support::same_dump(before, to_dump(d)), "step " << index << " " << s << ": a refusal changed the DCEL");
         return;
     }
-    const auto problem = testing::soundness_problem(d);  // validate(), and equality with the rebuild of to_graph(d)
+    const auto problem = test_support::soundness_problem(d);  // validate(), and equality with the rebuild of to_graph(d)
     FUZZ_CHECK(!problem, "step " << index << " " << s << ": unsound after the edit: " << *problem);
 
     const ExpectedEdit expected = expected_after(model, s, r);
@@ -108,7 +108,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (int step = 0; step < fuzz::kMaxSteps && !in.empty(); ++step) fuzz::check_step(d, model, fuzz::read_step(in), step);
 
     // The end state against a from-scratch build of the model's graph.
-    const auto difference = testing::difference_between(d, build(model));
+    const auto difference = test_support::difference_between(d, build(model));
     FUZZ_CHECK(!difference, "after all steps, the DCEL differs from build() of the model's graph: " << *difference);
     return 0;
 }

@@ -94,7 +94,7 @@ struct Embedded {
 };
 
 void check_faces(const Dcel& d, const Embedded& e) {
-    const std::vector<oracle::FaceShape> ours = testing::face_shapes(d);
+    const std::vector<oracle::FaceShape> ours = test_support::face_shapes(d);
     const std::vector<oracle::FaceShape> reference = oracle::face_shapes(e.half_edges,
                                                                          oracle::reference_dcel(e.half_edges, e.rotations));
     FUZZ_CHECK(ours == reference,
@@ -102,7 +102,7 @@ void check_faces(const Dcel& d, const Embedded& e) {
 }
 
 void check_cycles(const Dcel& d, const PlanarGraph& g, const Embedded& e) {
-    const std::vector<oracle::Cycle> ours = testing::dcel_cycles(d);
+    const std::vector<oracle::Cycle> ours = test_support::dcel_cycles(d);
     const std::vector<oracle::Cycle> boost = oracle::boost_face_cycles(g, e.rotations);
     FUZZ_CHECK(ours == boost,
                "the DCEL has " << ours.size() << " boundary cycles, Boost's traversal " << boost.size() << "; they differ");
@@ -208,11 +208,11 @@ void check_areas(const Dcel& d) {
     for (Index i = 0; i < d.num_faces(); ++i) {
         const FaceId f(i);
         if (d.is_unbounded(f)) continue;
-        oracle::Rational twice = oracle::twice_area(testing::cycle_points(d, d.outer(f)));
+        oracle::Rational twice = oracle::twice_area(test_support::cycle_points(d, d.outer(f)));
         FUZZ_CHECK(sign_of(cycle_area(d, d.outer(f)).sign) == sign_of(twice),
                    "cycle_area sign of f" << i << "'s outer cycle");
         for (const HalfEdgeId h : d.inner(f)) {
-            const oracle::Rational hole = oracle::twice_area(testing::cycle_points(d, h));
+            const oracle::Rational hole = oracle::twice_area(test_support::cycle_points(d, h));
             FUZZ_CHECK(sign_of(cycle_area(d, h).sign) == sign_of(hole), "cycle_area sign of a hole of f" << i);
             twice += hole;
         }

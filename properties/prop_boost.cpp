@@ -13,7 +13,7 @@ namespace {
 
 RC_GTEST_PROP(Boost, prop_cycles_match_planar_face_traversal, ()) {
     const GraphCase c = *graphs();
-    RC_ASSERT(testing::dcel_cycles(build(c.graph)) == oracle::boost_face_cycles(c.graph));
+    RC_ASSERT(test_support::dcel_cycles(build(c.graph)) == oracle::boost_face_cycles(c.graph));
 }
 
 RC_GTEST_PROP(Boost, prop_boyer_myrvold_finds_planar_with_the_same_face_count, ()) {

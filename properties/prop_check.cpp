@@ -18,13 +18,13 @@ namespace dcel::props {
 namespace {
 
 using check::DifferenceKind;
-using testing::count_kind;
-using testing::faces_answer;
+using test_support::count_kind;
+using test_support::faces_answer;
 
 RC_GTEST_PROP(Check, prop_check_renumbered_dump_agrees, ()) {
     const GraphCase c = *graphs();
     const Dcel d = build(c.graph);
-    const check::Report r = check::compare_dump(d, testing::renumbered(to_dump(d), *rc::gen::arbitrary<std::uint64_t>()));
+    const check::Report r = check::compare_dump(d, test_support::renumbered(to_dump(d), *rc::gen::arbitrary<std::uint64_t>()));
     RC_ASSERT(r.agrees());
 }
 
@@ -32,7 +32,7 @@ RC_GTEST_PROP(Check, prop_check_shuffled_faces_agree, ()) {
     const GraphCase c = *graphs();
     const Dcel d = build(c.graph);
     const check::Report r = check::compare_faces(d,
-                                                 testing::shuffled(faces_answer(d), *rc::gen::arbitrary<std::uint64_t>()));
+                                                 test_support::shuffled(faces_answer(d), *rc::gen::arbitrary<std::uint64_t>()));
     RC_ASSERT(r.agrees());
 }
 
@@ -46,7 +46,7 @@ RC_GTEST_PROP(Check, prop_check_reports_every_faces_corruption, ()) {
     check::FacesAnswer a = faces_answer(d);
     std::vector<std::size_t> not_own_reverse;  // cycles that differ from their reverse
     for (std::size_t i = 0; i < a.size(); ++i) {
-        if (testing::canonical(reversed(a[i])) != testing::canonical(a[i])) not_own_reverse.push_back(i);
+        if (test_support::canonical(reversed(a[i])) != test_support::canonical(a[i])) not_own_reverse.push_back(i);
     }
     std::vector<std::pair<Index, Index>> same_target;  // half-edges a < b into one vertex
     for (Index v = 0; v < d.num_vertices(); ++v) {
@@ -85,9 +85,9 @@ RC_GTEST_PROP(Check, prop_check_reports_every_faces_corruption, ()) {
         case FacesCorruption::SwapNext: {
             RC_CLASSIFY(true, "swap-next");
             const auto [x, y] = same_target[pick(same_target.size())];
-            std::vector<Index> next = testing::next_array(d);
+            std::vector<Index> next = test_support::next_array(d);
             std::swap(next[x], next[y]);
-            a = testing::cycles_of_permutation(d, next);
+            a = test_support::cycles_of_permutation(d, next);
             expected = DifferenceKind::WrongNext;
             break;
         }
@@ -102,7 +102,7 @@ RC_GTEST_PROP(Check, prop_check_reports_every_faces_corruption, ()) {
             expected = DifferenceKind::NotAnEdge, exactly = 1;
             break;
     }
-    const check::Report r = check::compare_faces(d, testing::shuffled(a, 1));
+    const check::Report r = check::compare_faces(d, test_support::shuffled(a, 1));
     RC_LOG() << check::report_text(r);
     RC_ASSERT(!r.agrees());
     RC_ASSERT(count_kind(r, expected) >= 1U);
@@ -200,7 +200,7 @@ RC_GTEST_PROP(Check, prop_check_reports_every_dump_corruption, ()) {
             expected = DifferenceKind::VertexCount;
             break;
     }
-    const check::Report r = check::compare_dump(d, testing::renumbered(a, 3));
+    const check::Report r = check::compare_dump(d, test_support::renumbered(a, 3));
     RC_LOG() << check::report_text(r);
     RC_ASSERT(!r.agrees());
     RC_ASSERT(r.differences[0].kind == expected);

@@ -45,12 +45,12 @@ RC_GTEST_PROP(Areas, prop_cycle_area_signs_and_sums_are_exact, ()) {
         const FaceId f(i);
         Rational face = 0;
         if (!d.is_unbounded(f)) {
-            const Rational outer = oracle::twice_area(testing::cycle_points(d, d.outer(f)));
+            const Rational outer = oracle::twice_area(test_support::cycle_points(d, d.outer(f)));
             RC_ASSERT(outer > 0);  // every bounded face's outer cycle is counterclockwise
             face += outer;
         }
         for (const HalfEdgeId h : d.inner(f)) {
-            const Rational hole = oracle::twice_area(testing::cycle_points(d, h));
+            const Rational hole = oracle::twice_area(test_support::cycle_points(d, h));
             const bool encloses = excess[label[d.origin(h).index()]] > 0;
             RC_ASSERT((encloses ? hole < 0 : hole == 0));  // a hole is clockwise, flat for a tree
             face += hole;

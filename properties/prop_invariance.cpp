@@ -14,7 +14,7 @@
 namespace dcel::props {
 namespace {
 
-using testing::face_shapes_renamed;
+using test_support::face_shapes_renamed;
 
 std::vector<Index> identity(std::size_t n) {
     std::vector<Index> v(n);

@@ -33,36 +33,36 @@ PlanarGraph triangle_with_tail() {
 
 TEST(CheckTesting, OneGraph) {
     const PlanarGraph g = triangle_with_tail();
-    EXPECT_TRUE(dcel::check::agrees_with_reference(g, right_faces(g)));
-    const ::testing::AssertionResult wrong = dcel::check::agrees_with_reference(g, buggy_faces(g));
+    EXPECT_TRUE(dcel::testing::agrees_with_reference(g, right_faces(g)));
+    const ::testing::AssertionResult wrong = dcel::testing::agrees_with_reference(g, buggy_faces(g));
     ASSERT_FALSE(wrong);
     const std::string message = wrong.message();
     EXPECT_NE(message.find("graph: {\"vertices\": [[0, 0], [4, 0]"), std::string::npos) << message;
     // The counterclockwise neighbour walks every cycle backwards.
     EXPECT_NE(message.find("reversed-cycle: answer cycle"), std::string::npos) << message;
 
-    EXPECT_TRUE(dcel::check::agrees_with_reference(g, dcel::to_dump(dcel::build(g))));
+    EXPECT_TRUE(dcel::testing::agrees_with_reference(g, dcel::to_dump(dcel::build(g))));
     dcel::DcelDump dump = dcel::to_dump(dcel::build(g));
     dump.vertices[3] = {-3, -2};
-    EXPECT_FALSE(dcel::check::agrees_with_reference(g, dump));
+    EXPECT_FALSE(dcel::testing::agrees_with_reference(g, dump));
 
     PlanarGraph crossing = g;
     crossing.edges.push_back({dcel::VertexId(1), dcel::VertexId(3)});
     crossing.edges.push_back({dcel::VertexId(2), dcel::VertexId(3)});
     crossing.vertices[3] = {3, 3};  // 0-3 now crosses 1-2 at (2, 2)
-    const auto refused = dcel::check::agrees_with_reference(crossing, FacesAnswer{});
+    const auto refused = dcel::testing::agrees_with_reference(crossing, FacesAnswer{});
     EXPECT_FALSE(refused);
     EXPECT_NE(std::string(refused.message()).find("the reference refuses the graph"), std::string::npos);
 }
 
 TEST(CheckTesting, RightSolverAgreesOnGeneratedGraphs) {
-    EXPECT_TRUE(dcel::check::faces_solver_agrees(right_faces));
-    EXPECT_TRUE(dcel::check::dump_solver_agrees(
-        [](const PlanarGraph& g) { return dcel::testing::renumbered(dcel::to_dump(dcel::build(g)), 5); }));
+    EXPECT_TRUE(dcel::testing::faces_solver_agrees(right_faces));
+    EXPECT_TRUE(dcel::testing::dump_solver_agrees(
+        [](const PlanarGraph& g) { return dcel::test_support::renumbered(dcel::to_dump(dcel::build(g)), 5); }));
 }
 
 TEST(CheckTesting, BuggySolverIsCaughtAndShrunk) {
-    const ::testing::AssertionResult result = dcel::check::faces_solver_agrees(buggy_faces);
+    const ::testing::AssertionResult result = dcel::testing::faces_solver_agrees(buggy_faces);
     ASSERT_FALSE(result);
     const std::string message = result.message();
     std::cerr << message;
@@ -78,6 +78,6 @@ TEST(CheckTesting, BuggySolverIsCaughtAndShrunk) {
     EXPECT_LE(std::count(points.begin(), points.end(), '['), 1 + 6) << points;
 }
 
-RC_GTEST_PROP(CheckTesting, prop_right_solver_in_a_property, ()) { dcel::check::rc_assert_faces_agree(right_faces); }
+RC_GTEST_PROP(CheckTesting, prop_right_solver_in_a_property, ()) { dcel::testing::rc_assert_faces_agree(right_faces); }
 
 }  // namespace

@@ -18,7 +18,7 @@
 namespace {
 
 namespace planted = dcel::props::planted;
-using dcel::check::CheckOptions;
+using dcel::testing::CheckOptions;
 
 constexpr int kSeeds = 20;
 
@@ -29,12 +29,12 @@ struct SeedRun {
 };
 
 // expect: words of which a failure message must hold at least one.
-SeedRun run_seeds(const std::function<testing::AssertionResult(const CheckOptions&)>& check,
+SeedRun run_seeds(const std::function<::testing::AssertionResult(const CheckOptions&)>& check,
                   const std::vector<std::string>& expect) {
     SeedRun run;
     for (int seed = 1; seed <= kSeeds; ++seed) {
         const auto start = std::chrono::steady_clock::now();
-        const testing::AssertionResult result = check(CheckOptions{.seed = static_cast<std::uint64_t>(seed)});
+        const ::testing::AssertionResult result = check(CheckOptions{.seed = static_cast<std::uint64_t>(seed)});
         run.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (result) continue;
         ++run.caught;
@@ -59,7 +59,7 @@ TEST(CheckTestingSeeds, TheDefaultsAreRapidChecks) {
 
 TEST(CheckTestingSeeds, Atan2OrderIsCaughtOnEverySeed) {
     const SeedRun run = run_seeds(
-        [](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::atan2_faces, o); },
+        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::atan2_faces, o); },
         {"wrong-next", "reversed-cycle"});
     report("atan2 angular order (faces)", run);
     EXPECT_EQ(run.caught, kSeeds);
@@ -68,7 +68,7 @@ TEST(CheckTestingSeeds, Atan2OrderIsCaughtOnEverySeed) {
 
 TEST(CheckTestingSeeds, CounterclockwiseNextIsCaughtOnEverySeed) {
     const SeedRun run = run_seeds(
-        [](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::ccw_faces, o); },
+        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::ccw_faces, o); },
         {"reversed-cycle", "wrong-next"});
     report("counterclockwise next (faces)", run);
     EXPECT_EQ(run.caught, kSeeds);
@@ -76,7 +76,7 @@ TEST(CheckTestingSeeds, CounterclockwiseNextIsCaughtOnEverySeed) {
 
 TEST(CheckTestingSeeds, IsolatedVertexCrashIsCaughtOnEverySeed) {
     const SeedRun run = run_seeds(
-        [](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::isolated_crash_faces, o); },
+        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::isolated_crash_faces, o); },
         {"the solver threw"});
     report("crash on an isolated vertex (faces)", run);
     EXPECT_EQ(run.caught, kSeeds);
@@ -85,7 +85,7 @@ TEST(CheckTestingSeeds, IsolatedVertexCrashIsCaughtOnEverySeed) {
 
 TEST(CheckTestingSeeds, HoleInTheWrongFaceIsCaughtOnEverySeed) {
     const SeedRun run = run_seeds(
-        [](const CheckOptions& o) { return dcel::check::dump_solver_agrees(planted::outer_hole_dump, o); },
+        [](const CheckOptions& o) { return dcel::testing::dump_solver_agrees(planted::outer_hole_dump, o); },
         {"wrong-hole", "hole-placement"});
     report("hole in the outermost face (dump)", run);
     EXPECT_EQ(run.caught, kSeeds);
@@ -94,11 +94,11 @@ TEST(CheckTestingSeeds, HoleInTheWrongFaceIsCaughtOnEverySeed) {
 
 TEST(CheckTestingSeeds, RightSolversPassEverySeed) {
     const SeedRun faces = run_seeds(
-        [](const CheckOptions& o) { return dcel::check::faces_solver_agrees(planted::right_faces, o); }, {});
+        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::right_faces, o); }, {});
     report("right solver (faces): failures", faces);
     EXPECT_EQ(faces.caught, 0);
     const SeedRun dump = run_seeds(
-        [](const CheckOptions& o) { return dcel::check::dump_solver_agrees(planted::right_dump, o); }, {});
+        [](const CheckOptions& o) { return dcel::testing::dump_solver_agrees(planted::right_dump, o); }, {});
     report("right solver (dump): failures", dump);
     EXPECT_EQ(dump.caught, 0);
 }

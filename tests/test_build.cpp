@@ -21,9 +21,9 @@
 namespace dcel {
 namespace {
 
-using testing::face_shapes;
-using testing::FaceShape;
-using testing::sorted_shapes;
+using test_support::face_shapes;
+using test_support::FaceShape;
+using test_support::sorted_shapes;
 
 PlanarGraph graph(std::vector<Point> points, std::vector<std::pair<Index, Index>> edges) {
     PlanarGraph g;
@@ -450,11 +450,11 @@ TEST(BuildOptions, LargeShuffledGraphSpansSeveralWriteBuckets) {
 std::vector<FaceShape> renamed(std::vector<FaceShape> shapes, const std::vector<Index>& rename) {
     for (FaceShape& f : shapes) {
         for (Index& v : f.outer) v = rename[v];
-        for (testing::Cycle& hole : f.holes) {
+        for (test_support::Cycle& hole : f.holes) {
             for (Index& v : hole) v = rename[v];
         }
         for (Index& v : f.isolated) v = rename[v];
-        f = testing::normalized(std::move(f));
+        f = test_support::normalized(std::move(f));
     }
     return sorted_shapes(std::move(shapes));
 }

@@ -18,6 +18,16 @@
 #include "oracles/exact.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::LexOrder;
+using detail::RingEntry;
+using detail::StatusList;
+using detail::advise_huge_pages;
+using detail::first_same_direction;
+using detail::lex_order_checked;
+using detail::reserve_huge;
+using detail::sort_ring;
 namespace {
 
 // Doubles that stress exact code: small integers, near-equal large values,

@@ -25,7 +25,7 @@ namespace {
 using oracle::Defects;
 using oracle::find_defects;
 using oracle::Meeting;
-using testing::FaceShape;
+using test_support::FaceShape;
 
 bool valid(const PlanarGraph& g) { return find_defects(g).empty(); }
 
@@ -89,8 +89,8 @@ TEST(BuildOracle, FacesHolesAndIsolatedVerticesMatchBruteForce) {
         const PlanarGraph g = random_graph(rng, true);
         ASSERT_TRUE(valid(g));
         const std::vector<FaceShape> expected = oracle::reference_faces(g);
-        ASSERT_EQ(testing::face_shapes(build(g)), expected) << "round " << round;
-        ASSERT_EQ(testing::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;
+        ASSERT_EQ(test_support::face_shapes(build(g)), expected) << "round " << round;
+        ASSERT_EQ(test_support::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;
     }
 }
 
@@ -102,8 +102,8 @@ TEST(BuildOracle, TreesAmongFramesMatchBruteForce) {
     for (int round = 0; round < 300; ++round) {
         const PlanarGraph g = random_graph(rng, true, true);
         const std::vector<FaceShape> expected = oracle::reference_faces(g);
-        ASSERT_EQ(testing::face_shapes(build(g)), expected) << "round " << round;
-        ASSERT_EQ(testing::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;
+        ASSERT_EQ(test_support::face_shapes(build(g)), expected) << "round " << round;
+        ASSERT_EQ(test_support::face_shapes(build(g, {.check_crossings = false})), expected) << "round " << round;
     }
 }
 

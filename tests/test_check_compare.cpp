@@ -15,7 +15,7 @@
 #include "support/check_helpers.hpp"
 #include "support/edit_helpers.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 namespace {
 
 using check::compare_dump;
@@ -449,4 +449,4 @@ TEST(CheckReport, TextAndJson) {
 }
 
 }  // namespace
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

@@ -22,9 +22,14 @@
 #include "support/check_helpers.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::CycleScanStats;
+using detail::for_each_boundary_cycle;
+using detail::kPrefetchFromHalfEdges;
 namespace {
 
-using testing::faces_answer;  // the plain one-walk-at-a-time loop: the oracle
+using test_support::faces_answer;  // the plain one-walk-at-a-time loop: the oracle
 using Cycles = check::FacesAnswer;
 
 Cycles as_indexes(const std::vector<std::vector<VertexId>>& cycles) {

@@ -15,6 +15,7 @@
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
 #include "dcel/io/dcel_json.hpp"
+#include "dcel/io/limited_readers.hpp"
 #include "dcel/queries.hpp"
 
 namespace dcel::io {

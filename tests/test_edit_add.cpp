@@ -14,14 +14,14 @@
 namespace dcel {
 namespace {
 
-using testing::countries;
-using testing::face_shapes;
-using testing::graph;
-using testing::half_edge;
-using testing::kEast;
-using testing::kEnclave;
-using testing::kWest;
-using testing::sorted_shapes;
+using test_support::countries;
+using test_support::face_shapes;
+using test_support::graph;
+using test_support::half_edge;
+using test_support::kEast;
+using test_support::kEnclave;
+using test_support::kWest;
+using test_support::sorted_shapes;
 
 TEST(AddEdge, CutsAFaceAlongANewBorder) {
     // West (0 1 4 5) gets a border at y = 4 from (0, 4) on edge 5-0 to (4, 4)

@@ -11,14 +11,14 @@
 namespace dcel {
 namespace {
 
-using testing::countries;
-using testing::face_shapes;
-using testing::graph;
-using testing::half_edge;
-using testing::kEast;
-using testing::kEnclave;
-using testing::kWest;
-using testing::sorted_shapes;
+using test_support::countries;
+using test_support::face_shapes;
+using test_support::graph;
+using test_support::half_edge;
+using test_support::kEast;
+using test_support::kEnclave;
+using test_support::kWest;
+using test_support::sorted_shapes;
 
 TEST(RemoveEdge, MergesTwoCountriesIntoTheSmallerId) {
     // Removing the border 1-4 (e6) merges East (f2) into West (f1). The last

@@ -14,9 +14,9 @@
 namespace dcel {
 namespace {
 
-using testing::face_shapes;
-using testing::graph;
-using testing::sorted_shapes;
+using test_support::face_shapes;
+using test_support::graph;
+using test_support::sorted_shapes;
 
 Dcel triangle() { return build(graph({{0, 0}, {4, 0}, {0, 4}}, {{0, 1}, {1, 2}, {2, 0}})); }
 

@@ -16,6 +16,7 @@
 
 #include "dcel/error.hpp"
 #include "dcel/io/graph_json.hpp"
+#include "dcel/io/limited_readers.hpp"
 
 namespace dcel::io {
 namespace {

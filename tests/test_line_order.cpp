@@ -14,6 +14,12 @@
 #include "oracles/exact.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::DirectedLine;
+using detail::LineEvent;
+using detail::compare_direction;
+using detail::cross_sign;
 namespace {
 
 using oracle::Rational;

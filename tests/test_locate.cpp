@@ -15,11 +15,11 @@
 namespace dcel {
 namespace {
 
-using testing::countries;
-using testing::graph;
-using testing::kEast;
-using testing::kEnclave;
-using testing::kWest;
+using test_support::countries;
+using test_support::graph;
+using test_support::kEast;
+using test_support::kEnclave;
+using test_support::kWest;
 
 void expect_both(const Dcel& d, const PointLocator& fast, Point p, Location expected) {
     EXPECT_EQ(locate_by_scan(d, p), expected) << "scan at (" << p.x << ", " << p.y << ")";
@@ -69,8 +69,8 @@ FaceId face_by_rebuild(const Dcel& d, Point p) {
 TEST(Locate, TrapezoidalMapAgreesWithScanOnRandomMaps) {
     std::size_t faces_checked = 0;
     for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-        const Dcel d = testing::random_map(seed, 60, 8);
-        ASSERT_FALSE(testing::soundness_problem(d).has_value());
+        const Dcel d = test_support::random_map(seed, 60, 8);
+        ASSERT_FALSE(test_support::soundness_problem(d).has_value());
         const PointLocator fast(d, seed);
         for (int i = -2; i <= 18; ++i) {
             for (int j = -2; j <= 18; ++j) {
@@ -119,7 +119,7 @@ TEST(Locate, SearchDepthGrowsLogarithmically) {
     // 3 ln n + O(1) for a fixed query). Check the longest path of the DAG on
     // growing random maps against a generous 12 log2 E bound.
     for (const int steps : {200, 800, 3200}) {
-        const Dcel d = testing::random_map(7, steps, 60);
+        const Dcel d = test_support::random_map(7, steps, 60);
         const PointLocator fast(d);
         const double log_e = std::log2(static_cast<double>(d.num_edges()) + 2);
         std::cerr << "  E = " << d.num_edges() << ": depth " << fast.depth() << ", nodes " << fast.num_nodes() << "\n";

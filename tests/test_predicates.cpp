@@ -179,7 +179,7 @@ TEST(CompareAngle, AgreesWithRationals) {
 TEST(ExactSum, MatchesRationalsAndRoundsCorrectly) {
     std::mt19937_64 rng(11);
     for (int i = 0; i < 3000; ++i) {
-        dcel::ExactSum sum;
+        dcel::detail::ExactSum sum;
         Rational expected = 0;
         const int terms = std::uniform_int_distribution<int>(1, 12)(rng);
         for (int k = 0; k < terms; ++k) {
@@ -209,7 +209,7 @@ TEST(ExactSum, MatchesRationalsAndRoundsCorrectly) {
 TEST(ExactSum, RoundsSubnormalAndScaledResultsOnce) {
     std::mt19937_64 rng(12);
     for (int i = 0; i < 20000; ++i) {
-        dcel::ExactSum sum;
+        dcel::detail::ExactSum sum;
         Rational expected = 0;
         const int terms = std::uniform_int_distribution<int>(1, 4)(rng);
         for (int k = 0; k < terms; ++k) {
@@ -235,15 +235,15 @@ TEST(ExactSum, RoundsSubnormalAndScaledResultsOnce) {
 }
 
 TEST(ExactSum, HalvesBeforeRounding) {
-    dcel::ExactSum near_half;  // 2^-1075 (1 + 2^-60): just above half the least subnormal
+    dcel::detail::ExactSum near_half;  // 2^-1075 (1 + 2^-60): just above half the least subnormal
     near_half.add_product(0x1p-1074, 0.5);
     near_half.add_product(0x1p-1074, 0x1p-61);
     EXPECT_EQ(near_half.to_double(), 0x1p-1074);
-    dcel::ExactSum twice_max;  // 2 DBL_MAX overflows, its half does not
+    dcel::detail::ExactSum twice_max;  // 2 DBL_MAX overflows, its half does not
     twice_max.add_product(DBL_MAX, 2.0);
     EXPECT_EQ(twice_max.to_double(), INFINITY);
     EXPECT_EQ(twice_max.to_double(-1), DBL_MAX);
-    dcel::ExactSum odd;  // 3 * 2^-1074 halved: 1.5 ulps, a tie, goes to the even 2 ulps
+    dcel::detail::ExactSum odd;  // 3 * 2^-1074 halved: 1.5 ulps, a tie, goes to the even 2 ulps
     odd.add_product(0x1.8p-1073, 1.0);
     EXPECT_EQ(odd.to_double(-1), 0x1p-1073);
     odd.subtract_product(0x1p-1072, 1.0);  // now -2^-1074, halved: a tie between 0 and one ulp
@@ -252,7 +252,7 @@ TEST(ExactSum, HalvesBeforeRounding) {
 }
 
 TEST(ExactSum, CancelsExactly) {
-    dcel::ExactSum s;
+    dcel::detail::ExactSum s;
     s.add_product(DBL_MAX, DBL_MAX);
     s.add_product(0x1p-1074, 0x1p-1074);
     s.subtract_product(DBL_MAX, DBL_MAX);
@@ -279,13 +279,13 @@ TEST(PolygonArea, SignAgreesWithRationals) {
         auto visit = [&](auto&& f) {
             for (std::size_t k = 0; k < poly.size(); ++k) f(poly[k], poly[(k + 1) % poly.size()]);
         };
-        ASSERT_EQ(dcel::polygon_area_sign(visit), rational_sign(dcel::oracle::twice_area(poly))) << i;
+        ASSERT_EQ(dcel::detail::polygon_area_sign(visit), rational_sign(dcel::oracle::twice_area(poly))) << i;
     }
 }
 
 // How the oracle's meeting (orientations and betweenness, exact) names a contact.
-dcel::Contact oracle_contact(Point a, Point b, Point c, Point d) {
-    using dcel::Contact;
+dcel::detail::Contact oracle_contact(Point a, Point b, Point c, Point d) {
+    using dcel::detail::Contact;
     using dcel::oracle::Meeting;
     switch (dcel::oracle::meeting(a, b, c, d)) {
         case Meeting::None: return Contact::None;
@@ -306,9 +306,9 @@ TEST(SegmentContact, AgreesWithExactBruteForce) {
         auto p = [&] { return Point{static_cast<double>(coord(rng)), static_cast<double>(coord(rng))}; };
         const Point a = p(), b = p(), c = p(), d = p();
         if (a == b || c == d) continue;
-        const dcel::Contact expected = oracle_contact(a, b, c, d);
+        const dcel::detail::Contact expected = oracle_contact(a, b, c, d);
         ++counts[static_cast<int>(expected)];
-        ASSERT_EQ(dcel::segment_contact(a, b, c, d), expected)
+        ASSERT_EQ(dcel::detail::segment_contact(a, b, c, d), expected)
             << "(" << a.x << "," << a.y << ")-(" << b.x << "," << b.y << ") vs (" << c.x << "," << c.y << ")-(" << d.x << ","
             << d.y << ")";
     }

@@ -23,6 +23,9 @@
 #include "dcel/validate.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::ExactSum;
 namespace {
 
 Dcel square_with_hole() {

@@ -26,8 +26,8 @@ void PrintTo(const StabPiece& p, std::ostream* os) {
 
 namespace {
 
-using testing::countries;
-using testing::graph;
+using test_support::countries;
+using test_support::graph;
 using Pieces = std::vector<StabPiece>;
 
 StabPiece F(Index f) { return StabPiece::in_face(FaceId(f)); }
@@ -109,7 +109,7 @@ TEST(Stab, LinesAcrossTheCountries) {
 TEST(Stab, WalksOnRandomMapsMatchBruteForce) {
     std::size_t pieces_seen = 0;
     for (std::uint64_t seed = 1; seed <= 40; ++seed) {
-        const Dcel d = testing::random_map(seed, 60, 8);
+        const Dcel d = test_support::random_map(seed, 60, 8);
         std::mt19937_64 rng(seed * 7919);
         auto coord = [&] { return static_cast<double>(rng() % 21) / 2.0 - 0.5; };
         for (int k = 0; k < 150; ++k) {

@@ -14,10 +14,10 @@
 namespace dcel {
 namespace {
 
-using testing::countries;
-using testing::kEast;
-using testing::kEnclave;
-using testing::kWest;
+using test_support::countries;
+using test_support::kEast;
+using test_support::kEnclave;
+using test_support::kWest;
 
 FaceId face_at(const Dcel& d, Point p) {
     const Location l = locate_by_scan(d, p);

@@ -4,5 +4,5 @@
 #include "dcel_adapter.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    return dcel::check::fuzz_faces_solver(data, size, my_faces);
+    return dcel::testing::fuzz_faces_solver(data, size, my_faces);
 }

@@ -20,7 +20,7 @@ namespace dcel::fuzz {
 constexpr std::size_t kMaxGeneratedVertices = 24;
 constexpr std::uint8_t kRawFlag = 4;  // flags bit 2: 16 raw bytes follow
 // flags bits 3-5 all set (one random flags byte in 8): a and b are wild ids
-// (testing::wild_id), any 32-bit id rather than one modulo the count.
+// (test_support::wild_id), any 32-bit id rather than one modulo the count.
 constexpr std::uint8_t kWildFlags = 0x38;
 constexpr std::size_t kStepBytes = 6;
 constexpr std::size_t kRawBytes = 16;
@@ -49,7 +49,7 @@ private:
 // (mod 8; 3..7 a generated graph: family byte, seed byte, size byte).
 inline PlanarGraph start_graph(Bytes& in) {
     const int which = in.byte() % 8;
-    if (which < 3) return testing::start_map(which);
+    if (which < 3) return test_support::start_map(which);
     const auto families = gen::all_families();
     gen::Params p;
     p.family = families[in.byte() % families.size()];
@@ -58,9 +58,9 @@ inline PlanarGraph start_graph(Bytes& in) {
     return gen::generate(p);
 }
 
-inline testing::Step read_step(Bytes& in) {
-    testing::Step s;
-    s.op = static_cast<testing::Op>(in.byte() % 7);
+inline test_support::Step read_step(Bytes& in) {
+    test_support::Step s;
+    s.op = static_cast<test_support::Op>(in.byte() % 7);
     s.a = in.byte();
     s.b = in.byte();
     s.x = in.byte() % 9 - 1;

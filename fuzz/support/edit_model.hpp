@@ -55,8 +55,8 @@ inline void remove_vertex(PlanarGraph& g, Index v) {
 }  // namespace model_detail
 
 // What an accepted step must leave, given the graph before it.
-inline ExpectedEdit expected_after(const PlanarGraph& before, const testing::Step& s, const testing::Resolved& r) {
-    using testing::Op;
+inline ExpectedEdit expected_after(const PlanarGraph& before, const test_support::Step& s, const test_support::Resolved& r) {
+    using test_support::Op;
     ExpectedEdit out{before, {}, {}};
     PlanarGraph& g = out.graph;
     const auto nv = static_cast<Index>(g.vertices.size());

@@ -12,20 +12,20 @@
 
 #include "support/edit_oracle.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 inline void showValue(const Step& s, std::ostream& os) { os << s; }
-}  // namespace dcel::testing
+}  // namespace dcel::test_support
 
 namespace dcel::props {
 
-using testing::apply;
-using testing::expected_valid;
-using testing::kGrid;
-using testing::Op;
-using testing::resolve;
-using testing::Resolved;
-using testing::start_map;
-using testing::Step;
+using test_support::apply;
+using test_support::expected_valid;
+using test_support::kGrid;
+using test_support::Op;
+using test_support::resolve;
+using test_support::Resolved;
+using test_support::start_map;
+using test_support::Step;
 
 // RapidCheck reads RC_PARAMS on first use; give it a fixed seed unless the
 // caller set one (RC_PARAMS="seed=..." reproduces or varies a run).

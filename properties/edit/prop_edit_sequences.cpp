@@ -37,7 +37,7 @@ RC_GTEST_PROP(EditProperties, prop_edit_sequences_match_rebuild, ()) {
         if (refused) continue;
         ++applied;
         data.follow(c, d);
-        const auto problem = testing::soundness_problem(d);
+        const auto problem = test_support::soundness_problem(d);
         if (problem) RC_FAIL("after " + std::to_string(applied) + " edits: " + *problem);
         RC_ASSERT(data.problem(d) == "");
         RC_ASSERT(data.labels_problem(d, samples) == "");

@@ -30,9 +30,9 @@ bool attempt(Dcel& d, const Step& s) {
     }
     RC_ASSERT(refused == !valid);
     if (refused) {
-        RC_ASSERT(testing::same_dump(before, to_dump(d)));
+        RC_ASSERT(test_support::same_dump(before, to_dump(d)));
     } else {
-        const auto problem = testing::soundness_problem(d);
+        const auto problem = test_support::soundness_problem(d);
         if (problem) RC_FAIL(*problem);
     }
     return refused;

@@ -7,7 +7,7 @@
 namespace dcel::props {
 
 rc::Gen<GraphCase> graphs(std::vector<gen::Family> families) {
-    return check::graph_cases({.families = std::move(families), .vertices_per_size = 3, .targeted = false});
+    return testing::graph_cases({.families = std::move(families), .vertices_per_size = 3, .targeted = false});
 }
 
 rc::Gen<GraphCase> graphs() { return graphs({}); }

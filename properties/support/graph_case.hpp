@@ -16,7 +16,7 @@
 
 namespace dcel::props {
 
-using check::GraphCase;  // printed by check::showValue
+using testing::GraphCase;  // printed by testing::showValue
 
 // Graphs from any family (or from the given ones), shrinking to valid graphs.
 [[nodiscard]] rc::Gen<GraphCase> graphs();

@@ -7,14 +7,11 @@
 #include <memory>
 #include <optional>
 
-#include "dcel/check/answer.hpp"
+#include "dcel/diff/options.hpp"
 
 namespace dcel::cli {
 
-struct AnswerOptions {
-    std::optional<check::AnswerKind> kind;  // none: detect it from each answer
-    check::Conventions conventions;
-};
+using diff::AnswerOptions;
 
 // Adds the options to cmd; `out` is filled as CLI11 parses.
 void add_answer_options(CLI::App& cmd, const std::shared_ptr<AnswerOptions>& out);

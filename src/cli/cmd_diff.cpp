@@ -9,19 +9,26 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <memory>
 
 #include "answer_options.hpp"
 #include "commands.hpp"
 #include "dcel/build.hpp"
 #include "dcel/check/counterexample_svg.hpp"
+#include "dcel/diff/report.hpp"
+#include "dcel/diff/session.hpp"
 #include "dcel/format.hpp"
-#include "diff_report.hpp"
-#include "diff_session.hpp"
 #include "option_values.hpp"
 
 namespace dcel::cli {
 namespace {
+
+using diff::Case;
+using diff::Counterexample;
+using diff::DiffOptions;
+using diff::DiffResult;
+using diff::Failure;
+using diff::Progress;
 
 constexpr const char* kFooter = R"(Protocol (docs/checking.md): CMD runs as /bin/sh -c CMD. It reads one graph,
 {"vertices": [[x, y], ...], "edges": [[u, v], ...]} on one line (numbers in any
@@ -105,7 +112,7 @@ std::string svg_of(const DiffOptions& options, const Failure& f) {
     const Counterexample& c = f.example;
     const Dcel reference = build(c.graph);
     check::CounterexampleDrawing drawing{&c.graph, &reference};
-    drawing.title = "dcel diff: " + failure_label(c.outcome) + ", case " + std::to_string(c.original.spec.number) +
+    drawing.title = "dcel diff: " + diff::failure_label(c.outcome) + ", case " + std::to_string(c.original.spec.number) +
                     ", seed " + std::to_string(options.schedule.seed);
     drawing.answer_name = "the command: " + options.impl;
     drawing.answer_cycles = c.outcome.answer_cycles;
@@ -113,27 +120,34 @@ std::string svg_of(const DiffOptions& options, const Failure& f) {
     return check::render_counterexample_svg(drawing);
 }
 
+// The options as typed; empty: the default, which DiffOptions{} holds.
 struct RawOptions {
-    std::string cases, seed = "1", time, max_vertices, large_vertices, timeout_ms = "5000", shrink_time = "20", only_case,
-                       max_failures = "20", print_case;
+    std::string cases, seed, time, max_vertices, large_vertices, timeout_ms, shrink_time, only_case, max_failures,
+        print_case;
     std::string families, exclude_families, coordinates, exclude_coordinates;
     std::string svg, report, junit;
     bool keep_going = false, stop_at_first = false;
 };
 
-DiffOptions resolve(const RawOptions& raw, DiffOptions o) {
-    constexpr std::uint64_t kMaxCases = std::uint64_t{1} << 40;
+constexpr std::uint64_t kMaxCases = std::uint64_t{1} << 40;
+
+void resolve_counts(const RawOptions& raw, DiffOptions& o) {
     if (!raw.cases.empty()) o.cases = parse_count("--cases", raw.cases, 1, kMaxCases);
-    o.schedule.seed = parse_count("--seed", raw.seed, 0, UINT64_MAX);
+    if (!raw.seed.empty()) o.schedule.seed = parse_count("--seed", raw.seed, 0, UINT64_MAX);
     if (!raw.time.empty()) o.time = parse_seconds("--time", raw.time, 0.001, 1e7);
     if (!raw.max_vertices.empty()) o.schedule.max_vertices = parse_count("--max-vertices", raw.max_vertices, 1, 100000);
     if (!raw.large_vertices.empty()) {
         o.schedule.large_vertices = parse_count("--large-vertices", raw.large_vertices, 0, 1000000);
     }
-    o.limits.timeout = std::chrono::milliseconds(parse_count("--timeout-ms", raw.timeout_ms, 1, 86400000));
-    o.shrink_time = parse_seconds("--shrink-time", raw.shrink_time, 0, 1e6);
+    if (!raw.timeout_ms.empty()) {
+        o.limits.timeout = std::chrono::milliseconds(parse_count("--timeout-ms", raw.timeout_ms, 1, 86400000));
+    }
+    if (!raw.shrink_time.empty()) o.shrink_time = parse_seconds("--shrink-time", raw.shrink_time, 0, 1e6);
     if (!raw.only_case.empty()) o.only_case = parse_count("--case", raw.only_case, 0, kMaxCases);
-    o.max_failures = parse_count("--max-failures", raw.max_failures, 1, 1000);
+    if (!raw.max_failures.empty()) o.max_failures = parse_count("--max-failures", raw.max_failures, 1, 1000);
+}
+
+void resolve_filters(const RawOptions& raw, DiffOptions& o) {
     if (!raw.families.empty() && !raw.exclude_families.empty()) {
         throw UsageError("--families and --exclude-families: give one of them");
     }
@@ -161,12 +175,136 @@ DiffOptions resolve(const RawOptions& raw, DiffOptions o) {
                                                                       coordinate, names_of_classes()));
         if (o.schedule.classes.empty()) throw UsageError("--exclude-coordinates: no class is left");
     }
-    if (o.time && !o.cases) o.cases.reset();  // --time alone: as many as fit
-    if (!o.time && !o.cases) o.cases = 200;
+}
+
+DiffOptions resolve(const RawOptions& raw, DiffOptions o) {
+    resolve_counts(raw, o);
+    resolve_filters(raw, o);
+    if (!o.time && !o.cases) o.cases = diff::defaults::kCases;  // --time alone: as many as fit
     o.keep_going = (raw.keep_going || o.time.has_value()) && !raw.stop_at_first;
     if (o.only_case) o.keep_going = false;
     o.schedule.one_line = true;  // one graph per line, in both modes
     return o;
+}
+
+// " (default N)" from the defaults, so that the help cannot disagree with them.
+template <class T>
+std::string default_is(const T& value, const std::string& unit = "") {
+    return " (default " + std::to_string(value) + unit + ")";
+}
+
+void add_schedule_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) {
+    const DiffOptions d;
+    cmd.add_option("--cases", raw.cases,
+                   "Number of cases (default " + std::to_string(diff::defaults::kCases) + "; unlimited with --time)")
+        ->type_name("N");
+    cmd.add_option("--seed", raw.seed, "Seed of the case schedule" + default_is(d.schedule.seed))->type_name("S");
+    cmd.add_option("--time", raw.time, "Stop looking for failures after T seconds (implies --keep-going)")->type_name("T");
+    cmd.add_option("--max-vertices", raw.max_vertices,
+                   "Largest size of the growing cases" + default_is(d.schedule.max_vertices))
+        ->type_name("K");
+    cmd.add_option("--large-vertices", raw.large_vertices,
+                   "Size of every 50th case, a large one (default " + std::to_string(d.schedule.large_vertices) +
+                       "; 0: none)")
+        ->type_name("L");
+    cmd.add_option("--families", raw.families, "Only these generator families, comma-separated")->type_name("LIST");
+    cmd.add_option("--exclude-families", raw.exclude_families, "Every generator family but these")->type_name("LIST");
+    cmd.add_option("--coordinates", raw.coordinates,
+                   "Only these coordinate classes: small-integers, normal, huge, tiny, subnormal")
+        ->type_name("LIST");
+    cmd.add_option("--exclude-coordinates", raw.exclude_coordinates, "Every coordinate class but these")
+        ->type_name("LIST");
+    cmd.add_flag("--positional", options.schedule.positional,
+                 "Also send some graphs in the positional form [[[x, y], ...], [[u, v], ...]] (default: object form only)");
+}
+
+void add_run_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) {
+    const DiffOptions d;
+    cmd.add_flag("--stream", options.stream, "Start \"CMD --stream\" once; one graph per line in, one answer per line out");
+    cmd.add_option("--timeout-ms", raw.timeout_ms,
+                   "Time allowed per case, in milliseconds" + default_is(d.limits.timeout.count()))
+        ->type_name("M");
+    cmd.add_option("--shrink-time", raw.shrink_time,
+                   "Time allowed for shrinking each failure, in seconds" + default_is(d.shrink_time.count() / 1000))
+        ->type_name("T");
+    cmd.add_flag("--keep-going", raw.keep_going,
+                 "Go on after a failure: group failures into distinct bugs, shrink each once, end with a summary");
+    cmd.add_flag("--stop-at-first", raw.stop_at_first, "Stop at the first failure, also under --time");
+    cmd.add_option("--max-failures", raw.max_failures,
+                   "With --keep-going, stop after N distinct failures" + default_is(d.max_failures))
+        ->type_name("N");
+    cmd.add_option("--case", raw.only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
+    cmd.add_option("--print-case", raw.print_case, "Print case N's graph, its exact bytes, and run nothing")
+        ->type_name("N");
+}
+
+void add_output_options(CLI::App& cmd, RawOptions& raw) {
+    cmd.add_option("--report", raw.report, "Write the report as JSON to FILE (docs/diff-report.schema.json)")
+        ->type_name("FILE");
+    cmd.add_option("--junit", raw.junit, "Write JUnit XML to FILE: one test case per distinct failure")->type_name("FILE");
+    cmd.add_option("--svg", raw.svg, "Draw each counterexample into FILE (failure k > 1: FILE-k.svg)")->type_name("FILE");
+}
+
+// Progress on stderr: a status line on a terminal; otherwise (a CI log) a
+// line every few seconds, so a long run is not silent.
+Progress progress_on_stderr(bool tty) {
+    auto last = std::make_shared<std::chrono::steady_clock::time_point>(std::chrono::steady_clock::now());
+    return [tty, last](const std::string& line) {
+        if (tty) {
+            std::fprintf(stderr, "\r\x1b[K%s", line.c_str());
+            return;
+        }
+        const auto now = std::chrono::steady_clock::now();
+        if (now - *last < std::chrono::seconds(5)) return;
+        *last = now;
+        std::fprintf(stderr, "dcel diff: %s\n", line.c_str());
+    };
+}
+
+// The report on stdout, then the files: a report file that cannot be
+// written loses nothing that stdout already has.
+void write_outputs(const RawOptions& raw, const DiffOptions& o, const DiffResult& result) {
+    write_stdout(diff::format_report(o, result));
+    if (!raw.report.empty()) write_file(raw.report, diff::report_json(o, result));
+    if (!raw.junit.empty()) write_file(raw.junit, diff::report_junit(o, result));
+    if (!raw.svg.empty()) {
+        for (const Failure& f : result.failures) {
+            const std::string path = numbered(raw.svg, f.id);
+            write_file(path, svg_of(o, f));
+            write_stdout("failure " + std::to_string(f.id) + " drawn in " + path + "\n");
+        }
+    }
+}
+
+// The whole command once its options are parsed: usage errors first (with
+// the shape CLI11 gives the other commands), then --print-case or the run.
+int run_diff_command(const RawOptions& raw, DiffOptions o, bool impl_given) {
+    try {
+        o = resolve(raw, std::move(o));
+        if (!raw.print_case.empty()) {
+            const std::size_t n = parse_count("--print-case", raw.print_case, 0, kMaxCases);
+            const std::optional<Case> c = diff::make_case(o.schedule, n);
+            if (!c) throw UsageError("case " + std::to_string(n) + " has no graph in the allowed coordinate classes");
+            write_stdout(c->text);
+            return kExitOk;
+        }
+        if (!impl_given) throw UsageError("--impl CMD is required (the program to check)");
+        if (o.impl.find_first_not_of(" \t\n") == std::string::npos) {
+            throw UsageError("--impl: the command is empty; give the program to check, e.g. --impl 'python3 mine.py'");
+        }
+    } catch (const UsageError& e) {
+        throw UsageError(std::string("diff: ") + e.what() + " (dcel diff --help)");
+    }
+    const bool tty = ::isatty(STDERR_FILENO) != 0;
+    DiffResult result;
+    try {
+        result = diff::run_diff(o, progress_on_stderr(tty));
+    } catch (const diff::ProcessError& e) {
+        throw UsageError(e.what());  // the command cannot be run at all: exit 2
+    }
+    if (tty) std::fprintf(stderr, "\r\x1b[K");
+    write_outputs(raw, o, result);
+    return result.failures.empty() ? kExitOk : kExitInvalid;
 }
 
 }  // namespace
@@ -181,91 +319,15 @@ void add_diff_command(CLI::App& app, Action& action) {
     auto answer = std::make_shared<AnswerOptions>();
     auto* impl = cmd->add_option("--impl", options->impl, "The implementation: a shell command (run by /bin/sh -c)")
                      ->type_name("CMD");
-    cmd->add_option("--cases", raw->cases, "Number of cases (default 200; unlimited with --time)")->type_name("N");
-    cmd->add_option("--seed", raw->seed, "Seed of the case schedule (default 1)")->type_name("S");
-    cmd->add_option("--time", raw->time, "Stop looking for failures after T seconds (implies --keep-going)")->type_name("T");
-    cmd->add_option("--max-vertices", raw->max_vertices, "Largest size of the growing cases (default 60)")->type_name("K");
-    cmd->add_option("--large-vertices", raw->large_vertices, "Size of every 50th case, a large one (default 2000; 0: none)")
-        ->type_name("L");
-    cmd->add_option("--families", raw->families, "Only these generator families, comma-separated")->type_name("LIST");
-    cmd->add_option("--exclude-families", raw->exclude_families, "Every generator family but these")->type_name("LIST");
-    cmd->add_option("--coordinates", raw->coordinates,
-                    "Only these coordinate classes: small-integers, normal, huge, tiny, subnormal")
-        ->type_name("LIST");
-    cmd->add_option("--exclude-coordinates", raw->exclude_coordinates, "Every coordinate class but these")
-        ->type_name("LIST");
-    cmd->add_flag("--positional", options->schedule.positional,
-                  "Also send some graphs in the positional form [[[x, y], ...], [[u, v], ...]] (default: object form only)");
+    add_schedule_options(*cmd, *raw, *options);
     add_answer_options(*cmd, answer);
-    cmd->add_flag("--stream", options->stream,
-                  "Start \"CMD --stream\" once; one graph per line in, one answer per line out");
-    cmd->add_option("--timeout-ms", raw->timeout_ms, "Time allowed per case, in milliseconds (default 5000)")
-        ->type_name("M");
-    cmd->add_option("--shrink-time", raw->shrink_time, "Time allowed for shrinking each failure, in seconds (default 20)")
-        ->type_name("T");
-    cmd->add_flag("--keep-going", raw->keep_going,
-                  "Go on after a failure: group failures into distinct bugs, shrink each once, end with a summary");
-    cmd->add_flag("--stop-at-first", raw->stop_at_first, "Stop at the first failure, also under --time");
-    cmd->add_option("--max-failures", raw->max_failures, "With --keep-going, stop after N distinct failures (default 20)")
-        ->type_name("N");
-    cmd->add_option("--case", raw->only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
-    cmd->add_option("--print-case", raw->print_case, "Print case N's graph, its exact bytes, and run nothing")
-        ->type_name("N");
-    cmd->add_option("--report", raw->report, "Write the report as JSON to FILE (docs/diff-report.schema.json)")
-        ->type_name("FILE");
-    cmd->add_option("--junit", raw->junit, "Write JUnit XML to FILE: one test case per distinct failure")->type_name("FILE");
-    cmd->add_option("--svg", raw->svg, "Draw each counterexample into FILE (failure k > 1: FILE-k.svg)")->type_name("FILE");
+    add_run_options(*cmd, *raw, *options);
+    add_output_options(*cmd, *raw);
     cmd->callback([&action, options, raw, answer, impl] {
         action = [options, raw, answer, impl] {
             DiffOptions o = *options;
             o.answer = *answer;
-            try {
-                o = resolve(*raw, std::move(o));
-                if (!raw->print_case.empty()) {
-                    const std::size_t n = parse_count("--print-case", raw->print_case, 0, std::uint64_t{1} << 40);
-                    const std::optional<Case> c = make_case(o.schedule, n);
-                    if (!c)
-                        throw UsageError("case " + std::to_string(n) + " has no graph in the allowed coordinate classes");
-                    write_stdout(c->text);
-                    return kExitOk;
-                }
-                if (impl->count() == 0) throw UsageError("--impl CMD is required (the program to check)");
-                if (o.impl.find_first_not_of(" \t\n") == std::string::npos) {
-                    throw UsageError(
-                        "--impl: the command is empty; give the program to check, e.g. --impl 'python3 mine.py'");
-                }
-            } catch (const UsageError& e) {
-                // The same shape as the errors CLI11 reports for the other commands.
-                throw UsageError(std::string("diff: ") + e.what() + " (dcel diff --help)");
-            }
-            const bool tty = ::isatty(STDERR_FILENO) != 0;
-            auto last = std::chrono::steady_clock::now();
-            Progress progress = [tty, &last](const std::string& line) {
-                if (tty) {
-                    std::fprintf(stderr, "\r\x1b[K%s", line.c_str());
-                    return;
-                }
-                // Not a terminal (a CI log): a line every few seconds, so a long run is not silent.
-                const auto now = std::chrono::steady_clock::now();
-                if (now - last < std::chrono::seconds(5)) return;
-                last = now;
-                std::fprintf(stderr, "dcel diff: %s\n", line.c_str());
-            };
-            const DiffResult result = run_diff(o, progress);
-            if (tty) std::fprintf(stderr, "\r\x1b[K");
-            write_stdout(format_report(o, result));
-            // Files after the report: a report file that cannot be written
-            // loses nothing that stdout already has.
-            if (!raw->report.empty()) write_file(raw->report, report_json(o, result));
-            if (!raw->junit.empty()) write_file(raw->junit, report_junit(o, result));
-            if (!raw->svg.empty()) {
-                for (const Failure& f : result.failures) {
-                    const std::string path = numbered(raw->svg, f.id);
-                    write_file(path, svg_of(o, f));
-                    write_stdout("failure " + std::to_string(f.id) + " drawn in " + path + "\n");
-                }
-            }
-            return result.failures.empty() ? kExitOk : kExitInvalid;
+            return run_diff_command(*raw, std::move(o), impl->count() != 0);
         };
     });
 }

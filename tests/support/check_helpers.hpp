@@ -14,7 +14,7 @@
 #include "dcel/dump.hpp"
 #include "oracles/shapes.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 using check::FacesAnswer;
 
@@ -131,4 +131,4 @@ inline const check::Difference* find_kind(const check::Report& r, check::Differe
 // A cycle's canonical form (its smallest rotation), to compare cycles as cycles.
 using oracle::canonical;
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 std::vector<oracle::Cycle> dcel_cycles(const Dcel& d) {
     std::vector<oracle::Cycle> cycles;
@@ -45,4 +45,4 @@ std::vector<Point> cycle_points(const Dcel& d, HalfEdgeId start) {
     return ring;
 }
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

@@ -9,7 +9,7 @@
 #include "dcel/dcel.hpp"
 #include "oracles/shapes.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 // Every boundary cycle (origin vertices in next order), canonical, sorted.
 [[nodiscard]] std::vector<oracle::Cycle> dcel_cycles(const Dcel& d);
@@ -22,4 +22,4 @@ namespace dcel::testing {
 // The vertices of the cycle through h, in next order.
 [[nodiscard]] std::vector<Point> cycle_points(const Dcel& d, HalfEdgeId h);
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

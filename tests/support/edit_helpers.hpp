@@ -11,7 +11,7 @@
 #include "dcel/dump.hpp"
 #include "rebuild_compare.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 inline PlanarGraph graph(std::vector<Point> points, const std::vector<std::pair<Index, Index>>& edges) {
     PlanarGraph g;
@@ -39,12 +39,12 @@ inline HalfEdgeId half_edge(const Dcel& d, Index u, Index v) {
     return {};
 }
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support
 
 // validate() passes and the DCEL equals the rebuild of its graph.
 #define EXPECT_SOUND(d)                                              \
     do {                                                             \
-        const auto problem_ = ::dcel::testing::soundness_problem(d); \
+        const auto problem_ = ::dcel::test_support::soundness_problem(d); \
         EXPECT_FALSE(problem_.has_value()) << *problem_;             \
     } while (false)
 
@@ -59,5 +59,5 @@ inline HalfEdgeId half_edge(const Dcel& d, Index u, Index v) {
             EXPECT_NE(std::string(e_.what()).find(text), std::string::npos) << e_.what();               \
             EXPECT_EQ(std::string(e_.what()).find('\n'), std::string::npos) << e_.what();               \
         }                                                                                               \
-        EXPECT_TRUE(::dcel::testing::same_dump(before_, ::dcel::to_dump(d))) << "changed: " #statement; \
+        EXPECT_TRUE(::dcel::test_support::same_dump(before_, ::dcel::to_dump(d))) << "changed: " #statement; \
     } while (false)

@@ -20,7 +20,7 @@
 #include "dcel/error.hpp"
 #include "dcel/to_graph.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 enum class Op : std::uint8_t { AddVertex, AddEdge, AddEdgeToPoint, SplitEdge, RemoveEdge, RemoveVertex, MergeEdges };
 
@@ -245,4 +245,4 @@ inline PlanarGraph start_map(int which) {
     return g;
 }
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

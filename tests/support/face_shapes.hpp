@@ -9,7 +9,7 @@
 #include "dcel/dcel.hpp"
 #include "oracles/shapes.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 using oracle::canonical;
 using oracle::Cycle;
@@ -39,4 +39,4 @@ inline std::vector<FaceShape> face_shapes(const Dcel& d) {
     return out;
 }
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

@@ -10,7 +10,7 @@
 #include "dcel/edit.hpp"
 #include "dcel/error.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 inline Dcel random_map(std::uint64_t seed, int steps, int grid) {
     std::mt19937_64 rng(seed);
@@ -58,4 +58,4 @@ inline Dcel random_map(std::uint64_t seed, int steps, int grid) {
     return d;
 }
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

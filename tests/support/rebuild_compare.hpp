@@ -21,7 +21,7 @@
 #include "dcel/to_graph.hpp"
 #include "dcel/validate.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 // The smallest half-edge of the cycle through each half-edge.
 inline std::vector<Index> cycle_ids(const Dcel& d) {
@@ -115,4 +115,4 @@ inline std::optional<std::string> soundness_problem(const Dcel& d) {
     return difference_from_rebuild(d);
 }
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

@@ -13,6 +13,16 @@
 #include "dcel/geometry/predicates.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::RankGraph;
+using detail::assign_huge;
+using detail::check_elements;
+using detail::lex_order_checked;
+using detail::rank_graph_checked;
+using detail::reserve_huge;
+using detail::sweep;
+using detail::sweep_ranks;
 namespace {
 
 // Frees a vector's memory now (clear() keeps the capacity).

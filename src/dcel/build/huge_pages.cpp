@@ -6,7 +6,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace dcel {
+namespace dcel::detail {
 
 void advise_huge_pages(void* data, std::size_t bytes) noexcept {
 #if defined(MADV_HUGEPAGE)
@@ -25,4 +25,4 @@ void advise_huge_pages(void* data, std::size_t bytes) noexcept {
 #endif
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -11,7 +11,7 @@
 #include <cstddef>
 #include <vector>
 
-namespace dcel {
+namespace dcel::detail {
 
 // Hints that [data, data + bytes) be backed by huge pages: the 2 MiB-aligned
 // part of it, on Linux; nothing elsewhere.
@@ -31,4 +31,4 @@ void assign_huge(std::vector<T>& v, std::size_t n, const T& value = T{}) {
     v.assign(n, value);
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -10,7 +10,7 @@
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 void check_elements(const PlanarGraph& g) {
     // Ids are 32 bits and kNoIndex is reserved for "null".
@@ -82,4 +82,4 @@ Rings sort_rings_checked(const PlanarGraph& g) {
     return r;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

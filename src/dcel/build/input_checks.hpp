@@ -8,7 +8,7 @@
 #include "dcel/graph.hpp"
 #include "dcel/ids.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 // Sizes fit 32-bit ids, coordinates are finite, indexes are in range, no
 // self-loops. O(V + E).
@@ -28,4 +28,4 @@ struct Rings {
 };
 [[nodiscard]] Rings sort_rings_checked(const PlanarGraph& g);
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -9,7 +9,7 @@
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 namespace {
 
 struct Keyed {
@@ -155,4 +155,4 @@ LexOrder lex_order_checked(const std::vector<Point>& points) {
     return out;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

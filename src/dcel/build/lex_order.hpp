@@ -14,7 +14,7 @@
 #include "dcel/geometry/point.hpp"
 #include "dcel/ids.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 struct LexOrder {
     std::vector<VertexId> vertex_of_rank;  // the vertices in sweep order
@@ -26,4 +26,4 @@ struct LexOrder {
 // vertices at one point, in sweep order (-0.0 and 0.0 are one point).
 [[nodiscard]] LexOrder lex_order_checked(const std::vector<Point>& points);
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -11,7 +11,7 @@
 #include "dcel/format.hpp"
 #include "dcel/geometry/predicates.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 void throw_same_direction(const PlanarGraph& g, VertexId v, HalfEdgeId a, HalfEdgeId b) {
     const EdgeId lo = std::min(edge_of(a), edge_of(b));
@@ -198,4 +198,4 @@ RankGraph rank_graph_from_rings(const PlanarGraph& g, std::span<const VertexId> 
     return rg;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

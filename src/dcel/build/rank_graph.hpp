@@ -15,7 +15,7 @@
 #include "dcel/graph.hpp"
 #include "dcel/ids.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 struct RankGraph {
     std::vector<Point> point;           // point[r]: the coordinates of the vertex of rank r
@@ -64,4 +64,4 @@ struct RankGraph {
 // leave v in the same direction.
 [[noreturn]] void throw_same_direction(const PlanarGraph& g, VertexId v, HalfEdgeId a, HalfEdgeId b);
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -11,7 +11,7 @@
 
 #include "dcel/geometry/predicates.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 namespace {
 
 // The exact order: quadrant, then orient2d, then half-edge id.
@@ -228,4 +228,4 @@ std::size_t first_same_direction(Point centre, std::span<const RingEntry> ring) 
     return ring.size();
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

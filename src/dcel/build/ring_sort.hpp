@@ -20,7 +20,7 @@
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/ids.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 struct RingEntry {
     Point target;  // where the half-edge goes
@@ -60,4 +60,4 @@ struct PairOrder {
 // way, or ring.size() when all directions differ. O(d).
 [[nodiscard]] std::size_t first_same_direction(Point centre, std::span<const RingEntry> ring);
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -2,7 +2,7 @@
 
 #include "dcel/build/huge_pages.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 namespace {
 
 // splitmix64: a fixed hash, so node levels do not depend on a seed.
@@ -99,4 +99,4 @@ void StatusList::erase(Index node) {
     free_ = node;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

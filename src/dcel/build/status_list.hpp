@@ -21,7 +21,7 @@
 
 #include "dcel/ids.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 class StatusList {
 public:
@@ -86,4 +86,4 @@ private:
     Index free_ = kNone;               // the last erased id, heading the chain of free ids
 };
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -11,7 +11,7 @@
 #include "dcel/geometry/predicates.hpp"
 #include "dcel/geometry/segments.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 namespace {
 
 // An edge as the sweep sees it, from its left (lexicographically smaller)
@@ -298,4 +298,4 @@ std::vector<EdgeId> sweep(const SweepInput& in, bool check_intersections) {
     return below;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

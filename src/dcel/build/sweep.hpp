@@ -21,7 +21,7 @@
 #include "dcel/graph.hpp"
 #include "dcel/ids.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 struct SweepInput {
     const PlanarGraph& graph;
@@ -53,4 +53,4 @@ struct SweepInput {
 void sweep_ranks(const RankGraph& rg, const PlanarGraph& graph, std::span<const char> wanted, std::span<Index> below,
                  bool check_intersections, std::span<const char> in_status = {});
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -30,6 +30,9 @@
 
 namespace dcel::check {
 
+// From the internals of the core (dcel::detail).
+using dcel::detail::polygon_area_sign;
+
 namespace {
 
 using Chain = std::vector<Index>;  // sorted half-edge ids

@@ -22,6 +22,11 @@
 
 namespace dcel {
 
+// From the internals of the core (dcel::detail).
+using detail::polygon_area_sign;
+using detail::strictly_inside_segment;
+using detail::winding_number;
+
 class DcelEditor {
 public:
     explicit DcelEditor(Dcel& d) : d_(d) {}

@@ -124,4 +124,19 @@ private:
 [[nodiscard]] PlanarGraph shrink(PlanarGraph g, const std::function<bool(const PlanarGraph&)>& still_fails,
                                  std::size_t max_steps = 20000);
 
+// The one greedy loop, behind shrink() and `dcel diff`'s shrinking: from the
+// position of the last candidate taken, try candidates in order; take the
+// first for which still_fails holds and start again from its position; when
+// nothing from there on fails, go once more from the first stage; end when
+// a whole pass from the start takes nothing (no single candidate of the
+// current graph fails) or stop() says so (asked before each candidate).
+struct GreedyShrink {
+    PlanarGraph graph;         // the smallest failing graph taken (the input when none)
+    std::size_t tried = 0;     // candidates handed to still_fails
+    std::size_t taken = 0;     // of which still failed
+    bool stopped = false;      // stop() ended it before a pass took nothing
+};
+[[nodiscard]] GreedyShrink shrink_greedily(PlanarGraph g, const std::function<bool(const PlanarGraph&)>& still_fails,
+                                           const std::function<bool()>& stop);
+
 }  // namespace dcel::gen

@@ -452,25 +452,36 @@ std::vector<PlanarGraph> shrink_candidates(const PlanarGraph& g) {
     return out;
 }
 
-PlanarGraph shrink(PlanarGraph g, const std::function<bool(const PlanarGraph&)>& still_fails, std::size_t max_steps) {
-    std::size_t steps = 0;
+GreedyShrink shrink_greedily(PlanarGraph g, const std::function<bool(const PlanarGraph&)>& still_fails,
+                             const std::function<bool()>& stop) {
+    GreedyShrink out{std::move(g)};
     ShrinkCandidates::Position resume;
     for (;;) {
         bool moved = false;
-        ShrinkCandidates candidates(g, resume);
+        ShrinkCandidates candidates(out.graph, resume);
         while (std::optional<PlanarGraph> c = candidates.next()) {
-            if (steps++ >= max_steps) return g;
+            if (stop()) {
+                out.stopped = true;
+                return out;
+            }
+            ++out.tried;
             if (still_fails(*c)) {
-                g = std::move(*c);
+                out.graph = std::move(*c);
+                ++out.taken;
                 resume = candidates.position();
                 moved = true;
                 break;
             }
         }
         if (moved) continue;
-        if (resume.stage == ShrinkCandidates::Stage::Empty) return g;  // a whole pass found nothing
-        resume = {};                                                   // once more from the start
+        if (resume.stage == ShrinkCandidates::Stage::Empty) return out;  // a whole pass found nothing
+        resume = {};                                                     // once more from the start
     }
+}
+
+PlanarGraph shrink(PlanarGraph g, const std::function<bool(const PlanarGraph&)>& still_fails, std::size_t max_steps) {
+    std::size_t steps = 0;
+    return shrink_greedily(std::move(g), still_fails, [&] { return steps++ >= max_steps; }).graph;
 }
 
 }  // namespace dcel::gen

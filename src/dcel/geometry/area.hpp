@@ -13,7 +13,7 @@
 #include "dcel/geometry/point.hpp"
 #include "dcel/geometry/sign.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 template <class Visit>
 [[nodiscard]] double polygon_twice_area(Visit&& visit) {
@@ -51,4 +51,4 @@ template <class Visit>
     return exact.sign();
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

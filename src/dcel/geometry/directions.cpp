@@ -4,7 +4,7 @@
 
 #include "dcel/geometry/exact_sum.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 namespace {
 
 constexpr double kEpsilon = 0x1p-53;
@@ -62,4 +62,4 @@ bool strictly_between_ccw(Direction s, Direction m, Direction r) {
     return sr == Sign::Negative ? (after_s && before_r) : (after_s || before_r);
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -6,7 +6,7 @@
 #include "dcel/geometry/point.hpp"
 #include "dcel/geometry/sign.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 // The sign of the cross product (q1 - p1) x (q2 - p2): Positive when the
 // second direction turns counterclockwise from the first (by less than pi).
@@ -28,4 +28,4 @@ struct Direction {
 };
 [[nodiscard]] bool strictly_between_ccw(Direction s, Direction m, Direction r);
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-namespace dcel {
+namespace dcel::detail {
 namespace {
 
 struct Decomposed {
@@ -115,4 +115,4 @@ double ExactSum::to_double(int scale) const {
     return c > 0 ? magnitude : -magnitude;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -15,7 +15,7 @@
 
 #include "dcel/geometry/sign.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 class ExactSum {
 public:
@@ -42,4 +42,4 @@ private:
     Register negative_{};
 };
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -3,7 +3,7 @@
 #include "dcel/geometry/directions.hpp"
 #include "dcel/geometry/predicates.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 DirectedLine::DirectedLine(Point a, Point b) : a_(a), b_(b), lex_forward_(lex_less(a, b)) {}
 
@@ -44,4 +44,4 @@ Sign DirectedLine::compare(const LineEvent& x, const LineEvent& y) const {
     return where == ahead_side(y.c, y.d) ? Sign::Positive : Sign::Negative;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

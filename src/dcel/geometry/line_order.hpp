@@ -14,7 +14,7 @@
 #include "dcel/geometry/point.hpp"
 #include "dcel/geometry/sign.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 struct LineEvent {
     bool crossing = false;
@@ -48,4 +48,4 @@ private:
     bool lex_forward_;  // points on L come in lex order (a before b in lex order)
 };
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -6,6 +6,9 @@
 #include "dcel/geometry/exact_sum.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::ExactSum;
 namespace {
 
 using detail::kOrientFilterBound;

@@ -2,7 +2,7 @@
 
 #include "dcel/geometry/predicates.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 bool strictly_inside_segment(Point a, Point b, Point p) { return !(p == a) && !(p == b) && on_segment(a, b, p); }
 
@@ -30,4 +30,4 @@ Contact segment_contact(Point a, Point b, Point c, Point d) {
     return Contact::None;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -4,7 +4,7 @@
 
 #include "dcel/geometry/point.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 enum class Contact {
     None,            // disjoint
@@ -19,4 +19,4 @@ enum class Contact {
 // Is p strictly inside segment ab (on it, and not an endpoint)?
 [[nodiscard]] bool strictly_inside_segment(Point a, Point b, Point p);
 
-}  // namespace dcel
+}  // namespace dcel::detail

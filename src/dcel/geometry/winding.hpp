@@ -14,7 +14,7 @@
 #include "dcel/geometry/point.hpp"
 #include "dcel/geometry/predicates.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 template <class Visit>
 [[nodiscard]] int winding_number(Point q, Visit&& visit) {
@@ -29,4 +29,4 @@ template <class Visit>
     return w;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -1,5 +1,6 @@
 #include "dcel/io/dcel_json.hpp"
 #include "dcel/io/json_writer.hpp"
+#include "dcel/io/limited_readers.hpp"
 
 #include <array>
 #include <span>
@@ -8,6 +9,9 @@
 #include "dcel/query/cycle_scan.hpp"
 
 namespace dcel::io {
+
+// From the internals of the core (dcel::detail).
+using dcel::detail::for_each_boundary_cycle;
 
 namespace {
 

@@ -26,7 +26,6 @@
 #include "dcel/dcel.hpp"
 #include "dcel/dump.hpp"
 #include "dcel/ids.hpp"
-#include "dcel/io/json_reader.hpp"
 
 namespace dcel::io {
 
@@ -53,12 +52,5 @@ enum class DumpStyle { Lines, Compact };
 // A dump when the top-level value is an object with a "half_edges" key,
 // otherwise a faces answer.
 [[nodiscard]] std::variant<std::vector<std::vector<Index>>, DcelDump> read_answer(std::string_view text);
-
-namespace detail {
-// The readers with caps on the counts (TooLarge beyond them); the public
-// functions use CountLimits{}, which is what 32-bit ids can name.
-[[nodiscard]] DcelDump read_dump(std::string_view text, const CountLimits& limits);
-[[nodiscard]] std::vector<std::vector<Index>> read_faces_answer(std::string_view text, const CountLimits& limits);
-}  // namespace detail
 
 }  // namespace dcel::io

@@ -1,5 +1,6 @@
 #include "dcel/io/graph_json.hpp"
 #include "dcel/io/json_writer.hpp"
+#include "dcel/io/limited_readers.hpp"
 
 #include <array>
 

@@ -18,7 +18,6 @@
 #include <vector>
 
 #include "dcel/graph.hpp"
-#include "dcel/io/json_reader.hpp"
 
 namespace dcel::io {
 
@@ -34,14 +33,5 @@ namespace dcel::io {
 // A document that is one array of points, [[x, y], ...] (as `dcel locate
 // --points` reads). Throws InvalidInput like read_graph.
 [[nodiscard]] std::vector<Point> read_points(std::string_view text);
-
-namespace detail {
-// read_graph with caps on the counts (TooLarge beyond them); the public
-// function uses CountLimits{}, which is what 32-bit ids can name.
-[[nodiscard]] PlanarGraph read_graph(std::string_view text, const CountLimits& limits);
-// At a value position: an array of points [[x, y], ...] appended to `out`
-// (TooLarge past `limit` points). Shared with the dump reader.
-void read_points(JsonReader& r, std::vector<Point>& out, std::uint64_t limit);
-}  // namespace detail
 
 }  // namespace dcel::io

@@ -83,17 +83,6 @@ enum class JsonType : unsigned char { Null, False, True, Number, String, Array, 
 // "null", "false", "true", "a number", "a string", "an array", "an object".
 [[nodiscard]] const char* describe(JsonType type);
 
-// Caps on element counts. The defaults are what 32-bit ids can name (kNoIndex
-// is the null id): vertex, half-edge and face ids up to 2^32 - 2, and edges up
-// to 2^31 - 1 so that half-edge 2k+1 fits. Lower caps are for tests (and for
-// callers that want to refuse huge inputs early); exceeding one is TooLarge.
-struct CountLimits {
-    std::uint64_t vertices = kNoIndex;
-    std::uint64_t edges = kNoIndex / 2;
-    std::uint64_t half_edges = kNoIndex;
-    std::uint64_t faces = kNoIndex;
-};
-
 class JsonReader {
 public:
     static constexpr std::size_t kMaxDepth = 256;

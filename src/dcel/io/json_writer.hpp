@@ -10,6 +10,7 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "dcel/ids.hpp"
 #include "dcel/io/json_string.hpp"
@@ -75,7 +76,55 @@ public:
         used_ = 0;
     }
 
+    // ---- Scopes, for documents written member by member (reports): the
+    // writer puts the commas, and with Layout::Lines a newline and two
+    // spaces per level before each member or element.
+    //   w.begin_object(Layout::Lines); w.key("id"); w.count(1);
+    //   w.key("cases"); w.begin_array(); w.item(); w.count(4); w.end_array();
+    //   w.end_object();
+    // Each value inside a scope comes after key() (objects) or item()
+    // (arrays); begin_object and begin_array are values too.
+    enum class Layout : std::uint8_t { Inline, Lines };
+    void begin_object(Layout layout = Layout::Inline) { open('{', layout); }
+    void end_object() { close('}'); }
+    void begin_array(Layout layout = Layout::Inline) { open('[', layout); }
+    void end_array() { close(']'); }
+    void key(std::string_view k) {
+        separate();
+        string(k);
+        raw(": ");
+    }
+    void item() { separate(); }
+    void boolean(bool b) { raw(b ? std::string_view("true") : std::string_view("false")); }
+    void null() { raw("null"); }
+
 private:
+    struct Scope {
+        Layout layout;
+        bool empty = true;
+    };
+    void open(char bracket, Layout layout) {
+        raw(bracket);
+        scopes_.push_back({layout});
+    }
+    void close(char bracket) {
+        const Scope s = scopes_.back();
+        scopes_.pop_back();
+        if (s.layout == Layout::Lines && !s.empty) newline();
+        raw(bracket);
+    }
+    void separate() {
+        Scope& s = scopes_.back();
+        if (!s.empty) raw(s.layout == Layout::Lines ? std::string_view(",") : std::string_view(", "));
+        if (s.layout == Layout::Lines) newline();
+        s.empty = false;
+    }
+    void newline() {
+        raw('\n');
+        for (std::size_t i = 0; i < scopes_.size(); ++i) raw("  ");
+    }
+    std::vector<Scope> scopes_;
+
     static constexpr std::size_t kSize = std::size_t{1} << 14;
     static constexpr std::size_t kNumberRoom = 32;  // "-2.2250738585072014e-308" is 24
     void room(std::size_t n) {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace dcel {
+namespace dcel::detail {
 namespace {
 
 // The prefetch pipeline: while the scan is at id i, the lines that step
@@ -97,4 +97,4 @@ CycleScanStats for_each_boundary_cycle(const Dcel& d, const std::function<void(s
     return stats;
 }
 
-}  // namespace dcel
+}  // namespace dcel::detail

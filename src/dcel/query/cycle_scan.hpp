@@ -15,7 +15,7 @@
 
 #include "dcel/dcel.hpp"
 
-namespace dcel {
+namespace dcel::detail {
 
 // How a scan went, for tests and benchmarks: the ids are scanned in blocks,
 // each with or without the prefetch pipeline (see cycle_scan.cpp).
@@ -35,4 +35,4 @@ inline constexpr std::size_t kPrefetchFromHalfEdges = std::size_t{1} << 18;
 CycleScanStats for_each_boundary_cycle(const Dcel& d, const std::function<void(std::span<const VertexId>)>& visit,
                                        std::size_t prefetch_from = kPrefetchFromHalfEdges);
 
-}  // namespace dcel
+}  // namespace dcel::detail

@@ -6,6 +6,10 @@
 #include "dcel/locate.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::strictly_inside_segment;
+using detail::winding_number;
 namespace {
 
 int winding_of_cycle(const Dcel& d, HalfEdgeId start, Point p) {

@@ -8,6 +8,10 @@
 #include "dcel/query/cycle_scan.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::ExactSum;
+using detail::for_each_boundary_cycle;
 namespace {
 
 void add_cycle(const Dcel& d, HalfEdgeId start, ExactSum& sum) {

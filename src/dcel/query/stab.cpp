@@ -12,6 +12,11 @@
 #include "dcel/query/rotation.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::DirectedLine;
+using detail::Direction;
+using detail::LineEvent;
 namespace {
 
 // The walk is a loop over states: at a vertex, at the crossing of an edge,

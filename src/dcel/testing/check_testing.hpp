@@ -3,13 +3,13 @@
 // graphs (graph_cases.hpp).
 //
 // Header-only, so the core library needs neither GoogleTest nor RapidCheck.
-// Link the CMake target dcel::check_testing (the library and dcel::gen) and
+// Link the CMake target dcel::testing (the library and dcel::gen) and
 // your own GTest::gtest and rapidcheck; RC_GTEST_PROP needs
 // <rapidcheck/gtest.h> besides this header.
 //
-//   EXPECT_TRUE(dcel::check::agrees_with_reference(graph, my_faces(graph)));
-//   EXPECT_TRUE(dcel::check::faces_solver_agrees(my_faces));   // runs RapidCheck
-//   RC_GTEST_PROP(Mine, agrees, ()) { dcel::check::rc_assert_faces_agree(my_faces); }
+//   EXPECT_TRUE(dcel::testing::agrees_with_reference(graph, my_faces(graph)));
+//   EXPECT_TRUE(dcel::testing::faces_solver_agrees(my_faces));   // runs RapidCheck
+//   RC_GTEST_PROP(Mine, agrees, ()) { dcel::testing::rc_assert_faces_agree(my_faces); }
 //
 // Strong by default: the graphs are targeted from the first case on
 // (near-degenerate coordinates, holes inside holes, isolated vertices, large
@@ -41,7 +41,15 @@
 #include "dcel/io/graph_json.hpp"
 #include "dcel/testing/graph_cases.hpp"
 
-namespace dcel::check {
+namespace dcel::testing {
+
+// The answer types and the comparison are dcel::check's; the helpers here
+// run it on the graphs of graph_cases.hpp.
+using check::compare_dump;
+using check::compare_faces;
+using check::FacesAnswer;
+using check::Report;
+using check::report_text;
 
 using FacesSolver = std::function<FacesAnswer(const PlanarGraph&)>;
 using DumpSolver = std::function<DcelDump(const PlanarGraph&)>;
@@ -159,4 +167,4 @@ inline void rc_assert_dump_agrees(const DumpSolver& solver, const GraphCaseOptio
     return testing_detail::solver_agrees(solver, testing_detail::dump, options);
 }
 
-}  // namespace dcel::check
+}  // namespace dcel::testing

@@ -6,11 +6,11 @@
 //
 //   #include "dcel/testing/fuzz_solver.hpp"
 //   extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-//       return dcel::check::fuzz_faces_solver(data, size, my_faces);  // or fuzz_dump_solver
+//       return dcel::testing::fuzz_faces_solver(data, size, my_faces);  // or fuzz_dump_solver
 //   }
 //
 // Header-only, standard library and dcel only (no engine header): link
-// dcel::check_testing, and the engine the usual way (-fsanitize=fuzzer, or
+// dcel::testing, and the engine the usual way (-fsanitize=fuzzer, or
 // $LIB_FUZZING_ENGINE). examples/downstream-fuzzing/ is a template with a
 // build script and a ClusterFuzzLite set-up.
 //
@@ -42,7 +42,15 @@
 #include "dcel/graph.hpp"
 #include "dcel/io/graph_json.hpp"
 
-namespace dcel::check {
+namespace dcel::testing {
+
+// The answer types and the comparison are dcel::check's; the helpers here
+// run it on the graphs of graph_cases.hpp.
+using check::compare_dump;
+using check::compare_faces;
+using check::FacesAnswer;
+using check::Report;
+using check::report_text;
 
 struct FuzzOptions {
     // Larger graphs find no more bugs per second: the reference and most
@@ -199,4 +207,4 @@ int fuzz_dump_solver(const std::uint8_t* data, std::size_t size, const Solver& s
     return fuzz_detail::fuzz<DcelDump>(data, size, solver, compare_dump, options);
 }
 
-}  // namespace dcel::check
+}  // namespace dcel::testing

@@ -10,7 +10,7 @@
 // prints as its parameters plus the graph as one line of JSON.
 //
 // Header-only (the library never depends on RapidCheck): link
-// dcel::check_testing and rapidcheck.
+// dcel::testing and rapidcheck.
 #pragma once
 
 #include <rapidcheck.h>
@@ -26,7 +26,7 @@
 #include "dcel/graph.hpp"
 #include "dcel/io/graph_json.hpp"
 
-namespace dcel::check {
+namespace dcel::testing {
 
 struct GraphCase {
     gen::Params params;  // where the graph came from (before shrinking)
@@ -176,4 +176,4 @@ inline rc::Seq<PlanarGraph> smaller_graphs(const PlanarGraph& g) {
     });
 }
 
-}  // namespace dcel::check
+}  // namespace dcel::testing

@@ -1,9 +1,9 @@
-#include "diff_cases.hpp"
+#include "dcel/diff/schedule.hpp"
 
 #include <algorithm>
 #include <array>
 
-namespace dcel::cli {
+namespace dcel::diff {
 namespace {
 
 // splitmix64's finaliser: neighbouring (seed, i) give unrelated seeds.
@@ -115,4 +115,4 @@ std::optional<Case> make_case(const Schedule& s, std::size_t i) {
 
 std::string spell(const PlanarGraph& g, const CaseSpec& spec) { return gen::write_spelled(g, spec.spelling); }
 
-}  // namespace dcel::cli
+}  // namespace dcel::diff

@@ -12,6 +12,15 @@
 #include "dcel/geometry/predicates.hpp"
 
 namespace dcel {
+
+// From the internals of the core (dcel::detail).
+using detail::Rings;
+using detail::SweepInput;
+using detail::check_elements;
+using detail::polygon_area_sign;
+using detail::sort_rings_checked;
+using detail::sort_vertices_checked;
+using detail::sweep;
 namespace {
 
 // Sizes as 32-bit counts (references() checks they fit before anything else).

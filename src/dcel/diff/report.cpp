@@ -1,4 +1,4 @@
-#include "diff_report.hpp"
+#include "dcel/diff/report.hpp"
 
 #include <sstream>
 
@@ -7,12 +7,7 @@
 #include "dcel/io/graph_json.hpp"
 #include "dcel/io/json_writer.hpp"
 
-namespace dcel::cli {
-namespace {
-
-constexpr std::size_t kShownBytes = 2000;  // of an answer or of stderr
-constexpr std::size_t kShownDifferences = 8;
-constexpr std::size_t kShownCases = 10;
+namespace dcel::diff {
 
 std::string seconds(std::chrono::milliseconds ms) {
     std::ostringstream s;
@@ -32,6 +27,11 @@ std::string without_newline(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     return text;
 }
+
+namespace {
+
+constexpr std::size_t kShownDifferences = 8;
+constexpr std::size_t kShownCases = 10;
 
 std::string kind_of(const Outcome& o) { return std::string(check::answer_kind_name(o.answer_kind)); }
 
@@ -68,8 +68,8 @@ std::string cases_list(const Failure& f) {
     return s;
 }
 
-// The body of one failure: how it shrank, the graph, the reference, the
-// answer, the differences, how to replay it.
+}  // namespace
+
 void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f) {
     const Counterexample& c = f.example;
     const Outcome& o = c.outcome;
@@ -126,6 +126,8 @@ void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f)
     s << "run the command on the counterexample:\n  printf '%s\\n' " << shell_quote(without_newline(c.text)) << " | "
       << options.impl << "\n";
 }
+
+namespace {
 
 std::string stop_text(const DiffResult& r) {
     switch (r.stopped_by) {
@@ -187,6 +189,15 @@ std::string run_arguments(const DiffOptions& options) {
 
 }  // namespace
 
+std::string run_command_line(const DiffOptions& options) {
+    std::string command = "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) +
+                          run_arguments(options) + " --timeout-ms " + std::to_string(options.limits.timeout.count());
+    if (options.cases) command += " --cases " + std::to_string(*options.cases);
+    if (options.time) command += " --time " + seconds(*options.time).substr(0, seconds(*options.time).size() - 2);
+    if (options.keep_going) command += " --keep-going";
+    return command;
+}
+
 std::string replay_command(const DiffOptions& options, std::size_t case_number) {
     return "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) + " --case " +
            std::to_string(case_number) + run_arguments(options) + " --timeout-ms " +
@@ -237,183 +248,4 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
     return s.str();
 }
 
-std::string report_json(const DiffOptions& options, const DiffResult& result) {
-    std::string out;
-    io::JsonWriter w(out);
-    auto key = [&](const char* k, bool first = false) {
-        w.raw(first ? "\n  \"" : ",\n  \"");
-        w.raw(std::string_view(k));
-        w.raw("\": ");
-    };
-    w.raw("{");
-    key("format", true);
-    w.string("dcel diff report 1");
-    key("command");
-    std::string command = "dcel diff --impl " + shell_quote(options.impl) + schedule_arguments(options) +
-                          run_arguments(options) + " --timeout-ms " + std::to_string(options.limits.timeout.count());
-    if (options.cases) command += " --cases " + std::to_string(*options.cases);
-    if (options.time) command += " --time " + seconds(*options.time).substr(0, seconds(*options.time).size() - 2);
-    if (options.keep_going) command += " --keep-going";
-    w.string(command);
-    key("impl");
-    w.string(options.impl);
-    key("seed");
-    w.count(options.schedule.seed);
-    key("answer_kind");
-    if (options.answer.kind) {
-        w.string(check::answer_kind_name(*options.answer.kind));
-    } else {
-        w.raw("null");
-    }
-    key("cases_run");
-    w.count(result.cases_run);
-    key("first_case");
-    w.count(result.first_case);
-    key("skipped");
-    w.count(result.skipped);
-    key("large_cases");
-    w.count(result.large_cases);
-    key("stopped_by");
-    static constexpr const char* kStops[] = {"cases", "time", "first-failure", "max-failures"};
-    w.string(kStops[static_cast<std::size_t>(result.stopped_by)]);
-    key("elapsed_ms");
-    w.count(static_cast<std::uint64_t>(result.elapsed.count()));
-    key("reference_cpu_ms");
-    w.count(static_cast<std::uint64_t>(result.reference_cpu.count()));
-    key("agrees");
-    w.raw(result.failures.empty() ? "true" : "false");
-    key("failures");
-    w.raw("[");
-    for (std::size_t i = 0; i < result.failures.size(); ++i) {
-        const Failure& f = result.failures[i];
-        const Counterexample& c = f.example;
-        w.raw(i == 0 ? "\n    {" : ",\n    {");
-        w.raw("\"id\": ");
-        w.count(f.id);
-        w.raw(", \"label\": ");
-        w.string(failure_label(c.first));
-        w.raw(", \"kind\": ");
-        w.string(failure_name(c.first.kind));
-        w.raw(", \"signature\": ");
-        w.string(f.signature);
-        w.raw(", \"occurrences\": ");
-        w.count(f.occurrences);
-        w.raw(", \"cases\": [");
-        for (std::size_t k = 0; k < f.cases.size(); ++k) {
-            if (k != 0) w.raw(", ");
-            w.count(f.cases[k]);
-        }
-        w.raw("], \"found_after_ms\": ");
-        w.count(static_cast<std::uint64_t>(f.found_after.count()));
-        w.raw(",\n     \"case\": {\"number\": ");
-        w.count(c.original.spec.number);
-        w.raw(", \"family\": ");
-        w.string(gen::family_name(c.original.spec.params.family));
-        w.raw(", \"coordinates\": ");
-        w.string(gen::coordinate_class_name(c.original.coordinates));
-        w.raw(", \"spelling\": ");
-        w.string(c.original.spec.spelling.describe());
-        w.raw(", \"vertices\": ");
-        w.count(c.original.graph.vertices.size());
-        w.raw(", \"edges\": ");
-        w.count(c.original.graph.edges.size());
-        w.raw("},\n     \"reproduced\": ");
-        w.raw(c.reproduced ? "true" : "false");
-        w.raw(", \"prefix\": [");
-        for (std::size_t k = 0; k < c.prefix.size(); ++k) {
-            if (k != 0) w.raw(", ");
-            w.string(c.prefix[k]);
-        }
-        w.raw("],\n     \"counterexample\": {\"vertices\": ");
-        w.count(c.graph.vertices.size());
-        w.raw(", \"edges\": ");
-        w.count(c.graph.edges.size());
-        w.raw(", \"text\": ");
-        w.string(c.text);
-        w.raw(", \"graph\": ");
-        w.raw(without_newline(io::write_graph(c.graph)));
-        w.raw("},\n     \"shrinking\": {\"attempts\": ");
-        w.count(c.attempts);
-        w.raw(", \"steps\": ");
-        w.count(c.steps);
-        w.raw(", \"elapsed_ms\": ");
-        w.count(static_cast<std::uint64_t>(c.shrink_elapsed.count()));
-        w.raw(", \"budget_spent\": ");
-        w.raw(c.budget_spent ? "true" : "false");
-        w.raw("},\n     \"outcome\": {\"label\": ");
-        w.string(failure_label(c.outcome));
-        w.raw(", \"what\": ");
-        w.string(c.outcome.what);
-        w.raw(", \"answer_kind\": ");
-        w.string(check::answer_kind_name(c.outcome.answer_kind));
-        w.raw(", \"stdout\": ");
-        w.string(c.outcome.run.out.substr(0, kShownBytes));
-        w.raw(", \"stderr_tail\": ");
-        w.string(c.outcome.run.err_tail);
-        w.raw(", \"differences\": [");
-        for (std::size_t k = 0; k < c.outcome.report.differences.size(); ++k) {
-            const check::Difference& d = c.outcome.report.differences[k];
-            w.raw(k == 0 ? "\n       {\"kind\": " : ",\n       {\"kind\": ");
-            w.string(check::kind_name(d.kind));
-            w.raw(", \"message\": ");
-            w.string(d.message);
-            w.raw("}");
-        }
-        w.raw("], \"notes\": [");
-        for (std::size_t k = 0; k < c.outcome.report.notes.size(); ++k) {
-            if (k != 0) w.raw(", ");
-            w.string(c.outcome.report.notes[k]);
-        }
-        w.raw("]},\n     \"reference\": ");
-        w.string(without_newline(check::reference_answer(build(c.graph), c.outcome.answer_kind)));
-        w.raw(",\n     \"replay\": ");
-        w.string(replay_command(options, c.original.spec.number));
-        w.raw("}");
-    }
-    w.raw(result.failures.empty() ? "]" : "\n  ]");
-    w.raw("\n}\n");
-    w.flush();
-    return out;
-}
-
-std::string report_junit(const DiffOptions& options, const DiffResult& result) {
-    auto xml = [](const std::string& text) {
-        std::string out;
-        for (const char ch : text) {
-            switch (ch) {
-                case '&': out += "&amp;"; break;
-                case '<': out += "&lt;"; break;
-                case '>': out += "&gt;"; break;
-                case '"': out += "&quot;"; break;
-                default:
-                    // XML 1.0 allows no control characters but tab, newline and return.
-                    out += static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\n' && ch != '\r' ? '?' : ch;
-                    break;
-            }
-        }
-        return out;
-    };
-    std::ostringstream s;
-    const std::size_t tests = result.failures.size() + 1;
-    s << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-    s << "<testsuites name=\"dcel diff\" tests=\"" << tests << "\" failures=\"" << result.failures.size() << "\">\n";
-    s << "  <testsuite name=\"" << xml("dcel diff --impl " + options.impl) << "\" tests=\"" << tests << "\" failures=\""
-      << result.failures.size() << "\" time=\"" << static_cast<double>(result.elapsed.count()) / 1000.0 << "\">\n";
-    s << "    <testcase classname=\"dcel.diff\" name=\"" << (result.cases_run - result.skipped) << " cases, seed "
-      << options.schedule.seed << "\"/>\n";
-    for (const Failure& f : result.failures) {
-        std::ostringstream body;
-        failure_body(body, options, f);
-        s << "    <testcase classname=\"dcel.diff\" name=\"" << xml("failure " + std::to_string(f.id) + ": " + f.signature)
-          << "\">\n";
-        s << "      <failure message=\""
-          << xml(failure_label(f.example.first) + " on case " + std::to_string(f.example.original.spec.number) +
-                 ", shrunk to " + size_of(f.example.graph))
-          << "\" type=\"" << xml(failure_name(f.example.first.kind).data()) << "\">" << xml(body.str()) << "</failure>\n";
-        s << "    </testcase>\n";
-    }
-    s << "  </testsuite>\n</testsuites>\n";
-    return s.str();
-}
-
-}  // namespace dcel::cli
+}  // namespace dcel::diff

@@ -1,11 +1,11 @@
-#include "diff_outcome.hpp"
+#include "dcel/diff/outcome.hpp"
 
 #include <algorithm>
 
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 
-namespace dcel::cli {
+namespace dcel::diff {
 
 std::string_view failure_name(FailureKind k) {
     switch (k) {
@@ -229,4 +229,4 @@ std::string failure_label(const Outcome& o) {
     return label;
 }
 
-}  // namespace dcel::cli
+}  // namespace dcel::diff

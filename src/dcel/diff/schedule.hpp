@@ -23,7 +23,7 @@
 #include "dcel/gen/generate.hpp"
 #include "dcel/gen/spelling.hpp"
 
-namespace dcel::cli {
+namespace dcel::diff {
 
 struct Schedule {
     std::uint64_t seed = 1;
@@ -63,4 +63,4 @@ struct Case {
 // the case they came from, so a reader's bug stays visible).
 [[nodiscard]] std::string spell(const PlanarGraph& g, const CaseSpec& spec);
 
-}  // namespace dcel::cli
+}  // namespace dcel::diff

@@ -1,4 +1,4 @@
-#include "process.hpp"
+#include "dcel/diff/process.hpp"
 
 #include <dirent.h>
 #include <fcntl.h>
@@ -17,11 +17,10 @@
 #include <string_view>
 #include <thread>
 
-#include "cli_support.hpp"
 
 extern char** environ;  // NOLINT: POSIX declares it nowhere else
 
-namespace dcel::cli {
+namespace dcel::diff {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -206,7 +205,7 @@ int above_stdio(int fd) {
 }
 Pipe make_pipe() {
     int fds[2];
-    if (::pipe(fds) != 0) throw UsageError(std::string("cannot create a pipe: ") + std::strerror(errno));
+    if (::pipe(fds) != 0) throw ProcessError(std::string("cannot create a pipe: ") + std::strerror(errno));
     for (int& fd : fds) {
         ::fcntl(fd, F_SETFD, FD_CLOEXEC);
         fd = above_stdio(fd);
@@ -254,7 +253,7 @@ Child spawn(const std::string& command) {
         ::close(in.write);
         ::close(out.read);
         ::close(err.read);
-        throw UsageError(std::string("cannot start /bin/sh: ") + std::strerror(rc));
+        throw ProcessError(std::string("cannot start /bin/sh: ") + std::strerror(rc));
     }
     for (int fd : {in.write, out.read, err.read}) set_nonblocking(fd);
     remember_group(pid);
@@ -326,7 +325,7 @@ Pump pump(Child& c, std::string_view& input, bool close_in, std::string& out, st
         const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
         if (left.count() <= 0) return Pump::Deadline;
         const int rc = ::poll(fds, n, static_cast<int>(std::min(left, kPollSlice).count()));
-        if (rc < 0 && errno != EINTR) throw UsageError(std::string("poll failed: ") + std::strerror(errno));
+        if (rc < 0 && errno != EINTR) throw ProcessError(std::string("poll failed: ") + std::strerror(errno));
         for (nfds_t i = 0; rc > 0 && i < n; ++i) {
             if (fds[i].revents == 0) continue;
             int& fd = *owner[i];
@@ -463,4 +462,4 @@ void StreamProcess::stop() {
     pending_.clear();
 }
 
-}  // namespace dcel::cli
+}  // namespace dcel::diff

@@ -1,4 +1,4 @@
-// The work of `dcel diff`: run the foreign command on the scheduled cases; on
+// The work of `dcel diff`: run the implementation on the scheduled cases; on
 // a failure confirm it, shrink it and keep what the report needs; with
 // --keep-going, go on, grouping failures into distinct bugs and shrinking each
 // once. No printing here except through the progress callback.
@@ -13,27 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "dcel/diff/clock.hpp"
+#include "dcel/diff/implementation.hpp"
+#include "dcel/diff/options.hpp"
+#include "dcel/diff/outcome.hpp"
+#include "dcel/diff/schedule.hpp"
 #include "dcel/graph.hpp"
-#include "diff_cases.hpp"
-#include "diff_outcome.hpp"
-#include "process.hpp"
 
-namespace dcel::cli {
-
-struct DiffOptions {
-    std::string impl;      // the command, run by /bin/sh -c
-    bool stream = false;   // run "IMPL --stream" once, a line per case
-    ProcessLimits limits;  // per case
-    Schedule schedule;
-    std::optional<std::size_t> cases;               // none: until --time runs out
-    std::optional<std::size_t> only_case;           // --case: replay this one
-    std::optional<std::chrono::milliseconds> time;  // bounds the search for failures
-    std::chrono::milliseconds shrink_time{20000};   // bounds the shrinking of each failure
-    std::size_t shrink_attempts = 5000;
-    AnswerOptions answer;
-    bool keep_going = false;        // go on after a failure (the default under --time)
-    std::size_t max_failures = 20;  // distinct failures; the search stops there
-};
+namespace dcel::diff {
 
 struct Counterexample {
     Case original;            // the case as generated: spec, graph, class, exact text
@@ -90,8 +77,12 @@ struct DiffResult {
 // Called with a short status line while working.
 using Progress = std::function<void(const std::string&)>;
 
-// Throws UsageError when /bin/sh cannot run the command at all (exit status
-// 126 or 127 on the first case).
+// Throws ProcessError when the command cannot be run at all (no /bin/sh, or
+// /bin/sh's exit status 126 or 127 on the first case: not found, not
+// executable). `implementation` makes the implementation under test (by
+// default the command of options.impl); `clock` is the time the budgets read.
 [[nodiscard]] DiffResult run_diff(const DiffOptions& options, const Progress& progress);
+[[nodiscard]] DiffResult run_diff(const DiffOptions& options, const Progress& progress,
+                                  const ImplementationFactory& implementation, const Clock& clock);
 
-}  // namespace dcel::cli
+}  // namespace dcel::diff

@@ -6,20 +6,28 @@
 // back to dcel, a child subreaper, when its parent dies, and is killed and
 // reaped once the run ends (or dcel is interrupted). Its stdin is written
 // while its stdout and stderr are read, all through poll(), so a child that
-// never reads its input, or fills a pipe before reading, cannot deadlock us. What it prints is capped, so garbage
-// cannot exhaust our memory.
+// never reads its input, or fills a pipe before reading, cannot deadlock us.
+// What it prints is capped, so garbage cannot exhaust our memory.
 #pragma once
 
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
-namespace dcel::cli {
+namespace dcel::diff {
+
+// The command could not be run at all: no pipe, no /bin/sh, poll failing,
+// or /bin/sh saying the command is not found or not executable.
+class ProcessError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
 
 struct ProcessLimits {
-    std::chrono::milliseconds timeout{10000};        // per run (per exchange with a stream)
+    std::chrono::milliseconds timeout{5000};         // per run (per exchange with a stream): --timeout-ms
     std::size_t max_output = std::size_t{64} << 20;  // stdout bytes; beyond is a failure
 };
 
@@ -81,4 +89,4 @@ private:
     std::size_t starts_ = 0;
 };
 
-}  // namespace dcel::cli
+}  // namespace dcel::diff

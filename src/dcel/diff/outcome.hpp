@@ -3,19 +3,19 @@
 // may trade one for the other (see same_failure).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include <array>
-
-#include "answer_options.hpp"
 #include "dcel/check/answer.hpp"
 #include "dcel/dcel.hpp"
-#include "process.hpp"
+#include "dcel/diff/options.hpp"
+#include "dcel/diff/process.hpp"
 
-namespace dcel::cli {
+namespace dcel::diff {
 
 enum class FailureKind : std::uint8_t {
     Crash,        // killed by a signal (or /bin/sh exited with 128 + its number)
@@ -65,4 +65,4 @@ struct AnswerJudging {
 // (dcel::escape_for_message), and how long it was when it is cut.
 [[nodiscard]] std::string printable(std::string_view text, std::size_t max_bytes);
 
-}  // namespace dcel::cli
+}  // namespace dcel::diff

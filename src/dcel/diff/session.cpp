@@ -1,0 +1,380 @@
+#include "dcel/diff/session.hpp"
+
+#include <algorithm>
+#include <deque>
+#include <memory>
+#include <unordered_set>
+
+#include "dcel/build.hpp"
+#include "dcel/error.hpp"
+#include "dcel/io/graph_json.hpp"
+
+namespace dcel::diff {
+namespace {
+
+using std::chrono::milliseconds;
+
+// How many passing graphs a --stream failure may need before it.
+constexpr std::size_t kHistory = 8;
+// A hang's candidates get this many times the slowest passing run, at least kMinShrinkTimeout.
+constexpr long kShrinkTimeoutFactor = 5;
+constexpr milliseconds kMinShrinkTimeout{250};
+
+// sh's own statuses for "not found" and "not executable": the command never ran.
+bool could_not_run(const Outcome& o) {
+    return o.kind == FailureKind::NonZeroExit && (o.run.exit_status == 126 || o.run.exit_status == 127);
+}
+
+std::uint64_t text_hash(const std::string& text) { return std::hash<std::string>{}(text); }
+
+class Session {
+public:
+    Session(const DiffOptions& o, const Progress& progress, const ImplementationFactory& make, const Clock& clock)
+        : o_(o), progress_(progress), make_(make), clock_(clock), impl_(make(o.limits)), judging_{o.answer, {}} {}
+
+    DiffResult run() {
+        const std::size_t first = o_.only_case.value_or(0);
+        const std::size_t end = o_.only_case ? first + 1 : o_.cases.value_or(SIZE_MAX);
+        result_.first_case = first;
+        result_.stopped_by = StopReason::Cases;
+        for (std::size_t i = first; i < end; ++i) {
+            if (o_.time && !o_.only_case && since(start_) >= *o_.time) {
+                result_.stopped_by = StopReason::Time;
+                break;
+            }
+            if (!run_case(i, first)) break;
+        }
+        result_.restarts = impl_->starts() > 0 ? impl_->starts() - 1 : 0;
+        result_.elapsed = since(start_);
+        result_.reference_cpu = clock_.cpu() - cpu_start_;
+        result_.agreed_as = judging_.agreed_as;
+        return std::move(result_);
+    }
+
+private:
+    [[nodiscard]] milliseconds since(Clock::time_point t) const {
+        return std::chrono::duration_cast<milliseconds>(clock_.now() - t);
+    }
+
+    // Runs case i; false when the run stops here.
+    bool run_case(std::size_t i, std::size_t first) {
+        std::optional<Case> c = make_case(o_.schedule, i);
+        ++result_.cases_run;
+        if (!c) {
+            ++result_.skipped;
+            return true;
+        }
+        result_.large_cases += c->spec.large ? 1 : 0;
+        report_progress(i, *c);
+        const Clock::time_point t = clock_.now();
+        Outcome outcome = judge(build(c->graph), impl_->run(c->text), o_.limits, judging_);
+        if (outcome.agrees) {
+            slowest_pass_ = std::max(slowest_pass_, since(t));
+            remember(std::move(*c));
+            return true;
+        }
+        if (i == first && could_not_run(outcome)) {
+            std::string why = outcome.run.err_tail;
+            while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+            throw ProcessError("cannot run --impl '" + o_.impl + "': /bin/sh " + describe_end(outcome.run, o_.limits) +
+                               (why.empty() ? "" : ": " + printable(why, 300)));
+        }
+        on_failure(std::move(*c), std::move(outcome));
+        if (!o_.keep_going) {
+            result_.stopped_by = StopReason::FirstFailure;
+            return false;
+        }
+        if (result_.failures.size() >= o_.max_failures) {
+            result_.stopped_by = StopReason::MaxFailures;
+            return false;
+        }
+        return true;
+    }
+
+    void report_progress(std::size_t i, const Case& c) {
+        if (!progress_) return;
+        const std::size_t end = o_.cases.value_or(0);
+        std::string line = "case " + std::to_string(i) + (o_.cases ? "/" + std::to_string(end) : "") + ", " +
+                           std::to_string(since(start_).count() / 1000) +
+                           " s: " + std::string(gen::family_name(c.spec.params.family)) + ", " +
+                           std::to_string(c.graph.vertices.size()) + " vertices, " +
+                           std::string(gen::coordinate_class_name(c.coordinates));
+        if (!result_.failures.empty()) line += "; " + std::to_string(result_.failures.size()) + " distinct failures";
+        progress_(line);
+    }
+
+    void remember(Case c) {
+        if (!o_.stream) return;
+        history_.push_back(std::move(c));
+        if (history_.size() > kHistory) history_.pop_front();
+    }
+
+    // A failure: counted against a failure already found when it fails the
+    // same way on the same coordinate class; otherwise confirmed, shrunk, and
+    // kept as a new one (or merged into one that shrank to the same graph).
+    void on_failure(Case c, Outcome outcome) {
+        const std::string key = failure_key(outcome) + "/" + std::string(gen::coordinate_class_name(c.coordinates));
+        for (Failure& f : result_.failures) {
+            if (std::find(f.keys.begin(), f.keys.end(), key) != f.keys.end()) {
+                count(f, c.spec.number);
+                return;
+            }
+        }
+        Failure f;
+        f.key = key;
+        f.keys.push_back(key);
+        f.found_after = since(start_);
+        count(f, c.spec.number);
+        f.example = investigate(std::move(c), std::move(outcome));
+        impl_->restart();  // the search goes on in a fresh process
+        // The same bug found again from another coordinate class shrinks to
+        // the same kind of failure on a graph of the same size and class (the
+        // shrinker snaps coordinates to small integers where the failure
+        // allows: a failure that needs subnormals keeps them, and stays apart).
+        f.signature = signature(f.example);
+        for (Failure& other : result_.failures) {
+            if (other.signature == f.signature) {
+                other.keys.push_back(f.key);
+                count(other, f.cases.front());
+                return;
+            }
+        }
+        f.id = result_.failures.size() + 1;
+        result_.failures.push_back(std::move(f));
+    }
+
+    static std::string signature(const Counterexample& x) {
+        return failure_key(x.outcome) + "/" + std::string(gen::coordinate_class_name(gen::classify(x.graph))) + "/" +
+               std::to_string(x.graph.vertices.size()) + "v" + std::to_string(x.graph.edges.size()) + "e";
+    }
+
+    static void count(Failure& f, std::size_t case_number) {
+        ++f.occurrences;
+        if (f.cases.size() < kMaxListedCases) f.cases.push_back(case_number);
+    }
+
+    Counterexample investigate(Case c, Outcome first) {
+        Counterexample x;
+        x.first = std::move(first);
+        x.original = std::move(c);
+        x.graph = x.original.graph;
+        x.text = x.original.text;
+        x.outcome = x.first;
+        reproduce(x);
+        if (x.reproduced) shrink(x);
+        recheck_hint(x);
+        return x;
+    }
+
+    // Alone, in a fresh process; then, for a --stream that keeps state,
+    // after the last 1, 2, 4 or 8 graphs that passed before it.
+    void reproduce(Counterexample& x) {
+        impl_->restart();
+        x.reproduced = fails_same(*impl_, {}, x.original.text, x.first).has_value();
+        if (x.reproduced || !o_.stream) return;
+        for (std::size_t k = 1; k <= history_.size() && !x.reproduced; k *= 2) {
+            std::vector<std::string> prefix;
+            for (std::size_t j = history_.size() - k; j < history_.size(); ++j) prefix.push_back(history_[j].text);
+            if (fails_same(*impl_, prefix, x.original.text, x.first)) {
+                x.reproduced = true;
+                x.prefix = std::move(prefix);
+                prefix_cases_.assign(history_.end() - static_cast<std::ptrdiff_t>(k), history_.end());
+            }
+        }
+    }
+
+    // A hint that another convention makes the answer agree must hold for the
+    // case as found, not only for the shrunk graph (where a bug that reverses
+    // every cycle through a vertex of degree 3 reverses them all).
+    void recheck_hint(Counterexample& x) const {
+        std::vector<std::string>& notes = x.outcome.report.notes;
+        std::erase_if(notes, [](const std::string& n) { return n.rfind("the answer agrees with", 0) == 0; });
+        if (x.first.kind != FailureKind::WrongAnswer) return;
+        try {
+            const check::Answer a = check::read_answer(x.first.run.out, x.first.answer_kind);
+            if (std::optional<std::string> hint = check::convention_hint(build(x.original.graph), a,
+                                                                         o_.answer.conventions)) {
+                notes.push_back(std::move(*hint));
+            }
+        } catch (const InvalidInput&) {
+            // read before as this kind; nothing to add
+        }
+    }
+
+    // The outcome when the graph fails like `like` (run in a fresh process
+    // after `prefix` when there is one), or nothing.
+    std::optional<Outcome> fails_same(Implementation& impl, const std::vector<std::string>& prefix,
+                                      const std::string& text, const Outcome& like) {
+        const PlanarGraph g = io::read_graph(text);
+        const ProcessResult r = prefix.empty() ? impl.run(text) : impl.run_after(prefix, text);
+        Outcome o = judge(build(g), r, o_.limits, judging_);
+        if (!same_failure(o, like)) return std::nullopt;
+        return o;
+    }
+
+    // What shrinking one failure needs: its own implementation (a hang's
+    // candidates run under a shorter timeout), the candidates known to pass,
+    // the budget, and every smaller failing graph (for a hang's confirmation).
+    struct Shrinking {
+        Counterexample& x;
+        ProcessLimits limits;
+        std::unique_ptr<Implementation> impl;
+        Clock::time_point deadline;
+        std::unordered_set<std::uint64_t> passed;
+        std::vector<PlanarGraph> accepted;
+    };
+
+    void shrink(Counterexample& x) {
+        const Clock::time_point begin = clock_.now();
+        Shrinking s{x, shrink_limits(x), nullptr, begin + o_.shrink_time, {}, {}};
+        s.impl = make_(s.limits);
+        shrink_graph(s);
+        drop_prefix_graphs(s);
+        shrink_prefix_graphs(s);
+        if (x.shrink_timeout) confirm_hang(x, s.accepted);
+        x.shrink_elapsed = since(begin);
+    }
+
+    // A hang costs a whole timeout per failing candidate: the candidates get
+    // a few times what the slowest passing case needed.
+    ProcessLimits shrink_limits(Counterexample& x) const {
+        ProcessLimits limits = o_.limits;
+        if (x.first.kind != FailureKind::Timeout) return limits;
+        const milliseconds derived = std::max(kMinShrinkTimeout, milliseconds(slowest_pass_.count() * kShrinkTimeoutFactor));
+        if (derived < limits.timeout) {
+            limits.timeout = derived;
+            x.shrink_timeout = derived;
+        }
+        return limits;
+    }
+
+    bool out_of_budget(Shrinking& s) const {
+        if (clock_.now() < s.deadline && s.x.attempts < o_.shrink_attempts) return false;
+        s.x.budget_spent = true;
+        return true;
+    }
+
+    // Runs one candidate (the graph with the prefix graphs before it); its
+    // outcome when it fails the same way as the original.
+    std::optional<Outcome> attempt(Shrinking& s, const PlanarGraph& candidate, const std::vector<std::string>& prefix,
+                                   const std::string& text) {
+        const std::uint64_t h = text_hash(text) ^ (prefix.size() * 0x9e3779b97f4a7c15ULL);
+        if (s.passed.contains(h)) return std::nullopt;
+        ++s.x.attempts;
+        if (progress_) {
+            progress_("shrinking failure " + std::to_string(result_.failures.size() + 1) + ": " +
+                      std::to_string(s.x.graph.vertices.size()) + " vertices, " +
+                      std::to_string(s.x.graph.edges.size()) + " edges, " + std::to_string(s.x.attempts) + " attempts");
+        }
+        if (!prefix.empty()) s.impl->restart();
+        const ProcessResult r = prefix.empty() ? s.impl->run(text) : s.impl->run_after(prefix, text);
+        Outcome o = judge(build(candidate), r, s.limits, judging_);
+        if (!same_failure(o, s.x.first)) {
+            s.passed.insert(h);
+            if (o.kind == FailureKind::Timeout || o.kind == FailureKind::Crash) s.impl->restart();
+            return std::nullopt;
+        }
+        return o;
+    }
+
+    // The failing graph, the prefix (if any) fixed.
+    void shrink_graph(Shrinking& s) {
+        Counterexample& x = s.x;
+        (void)gen::shrink_greedily(
+            x.graph,
+            [&](const PlanarGraph& c) {
+                const std::string text = spell(c, x.original.spec);
+                std::optional<Outcome> o = attempt(s, c, x.prefix, text);
+                if (!o) return false;
+                x.graph = c;
+                x.text = text;
+                x.outcome = std::move(*o);
+                ++x.steps;
+                if (x.shrink_timeout) s.accepted.push_back(c);
+                return true;
+            },
+            [&] { return out_of_budget(s); });  // x.graph follows every candidate taken
+    }
+
+    // Each graph of the prefix left out where the failure allows.
+    void drop_prefix_graphs(Shrinking& s) {
+        Counterexample& x = s.x;
+        for (std::size_t j = 0; j < x.prefix.size() && !out_of_budget(s);) {
+            std::vector<std::string> shorter = x.prefix;
+            shorter.erase(shorter.begin() + static_cast<std::ptrdiff_t>(j));
+            if (std::optional<Outcome> o = attempt(s, x.graph, shorter, x.text); o && !shorter.empty()) {
+                x.prefix = std::move(shorter);
+                prefix_cases_.erase(prefix_cases_.begin() + static_cast<std::ptrdiff_t>(j));
+                x.outcome = std::move(*o);
+                ++x.steps;
+            } else {
+                ++j;
+            }
+        }
+    }
+
+    // Then each graph of the prefix shrunk, the others fixed.
+    void shrink_prefix_graphs(Shrinking& s) {
+        Counterexample& x = s.x;
+        for (std::size_t j = 0; j < x.prefix.size() && !out_of_budget(s); ++j) {
+            (void)gen::shrink_greedily(
+                prefix_cases_[j].graph,
+                [&](const PlanarGraph& c) {
+                    std::vector<std::string> prefix = x.prefix;
+                    prefix[j] = spell(c, prefix_cases_[j].spec);
+                    std::optional<Outcome> o = attempt(s, x.graph, prefix, x.text);
+                    if (!o) return false;
+                    x.prefix = std::move(prefix);
+                    x.outcome = std::move(*o);
+                    ++x.steps;
+                    return true;
+                },
+                [&] { return out_of_budget(s); });
+        }
+    }
+
+    // Candidates ran with a shortened timeout; the counterexample must hang
+    // for the whole --timeout-ms. The smallest accepted graph that does is it.
+    void confirm_hang(Counterexample& x, std::vector<PlanarGraph>& accepted) {
+        impl_->restart();
+        accepted.insert(accepted.begin(), x.original.graph);
+        while (!accepted.empty()) {
+            const PlanarGraph g = std::move(accepted.back());
+            accepted.pop_back();
+            const std::string text = spell(g, x.original.spec);
+            if (std::optional<Outcome> o = fails_same(*impl_, x.prefix, text, x.first)) {
+                x.graph = g;
+                x.text = text;
+                x.outcome = std::move(*o);
+                return;
+            }
+            impl_->restart();
+        }
+    }
+
+    const DiffOptions& o_;
+    const Progress& progress_;
+    const ImplementationFactory& make_;
+    const Clock& clock_;
+    Clock::time_point start_ = clock_.now();
+    milliseconds cpu_start_ = clock_.cpu();  // this process only, not the command
+    std::unique_ptr<Implementation> impl_;
+    AnswerJudging judging_;
+    DiffResult result_;
+    milliseconds slowest_pass_{0};
+    std::deque<Case> history_;        // --stream: the last graphs that passed, in order
+    std::vector<Case> prefix_cases_;  // the cases behind a failure's prefix
+};
+
+}  // namespace
+
+DiffResult run_diff(const DiffOptions& options, const Progress& progress, const ImplementationFactory& implementation,
+                    const Clock& clock) {
+    return Session(options, progress, implementation, clock).run();
+}
+
+DiffResult run_diff(const DiffOptions& options, const Progress& progress) {
+    return run_diff(options, progress, command_implementation(options.impl, options.stream), system_clock());
+}
+
+}  // namespace dcel::diff
