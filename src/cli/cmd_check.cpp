@@ -1,6 +1,8 @@
 // dcel check GRAPH ANSWER: compares another implementation's answer for GRAPH
 // with the reference. Exit 0 agrees, 1 differs (an unreadable ANSWER is a
 // difference), 2 usage error or an unreadable or invalid GRAPH.
+#include <algorithm>
+
 #include "answer_options.hpp"
 #include "commands.hpp"
 #include "dcel/build.hpp"
@@ -49,6 +51,11 @@ Dcel load_reference(const std::string& path) {
 }
 
 std::string agreement(const Dcel& d, check::AnswerKind kind) {
+    if (kind == check::AnswerKind::EvenOdd) {
+        const std::vector<char> odd = check::odd_faces(d);
+        const auto regions = static_cast<std::size_t>(std::count(odd.begin(), odd.end(), char{1}));
+        return "agrees: the answer has the " + std::to_string(regions) + " even-odd regions of the reference as polygons\n";
+    }
     if (kind == check::AnswerKind::Polygons || kind == check::AnswerKind::Rings) {
         std::size_t bounded = d.num_faces() - 1;
         return "agrees: the answer has the " + std::to_string(bounded) + " bounded faces of the reference as " +

@@ -304,7 +304,7 @@ int run_diff_command(const RawOptions& raw, DiffOptions o, bool impl_given) {
     }
     if (tty) std::fprintf(stderr, "\r\x1b[K");
     write_outputs(raw, o, result);
-    return result.failures.empty() ? kExitOk : kExitInvalid;
+    return diff::run_passes(result) ? kExitOk : kExitInvalid;
 }
 
 }  // namespace

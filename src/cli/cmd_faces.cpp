@@ -15,8 +15,9 @@ void add_faces_command(CLI::App& app, Action& action) {
     cmd->add_option("GRAPH", *path, "Graph JSON file, or - for stdin (the default)");
     cmd->add_option("--answer", *kind,
                     "Print the answer of this kind instead: faces (the default), dump (as dcel build), polygons "
-                    "(bounded faces with holes), rings (one ring per bounded face)")
-        ->check(CLI::IsMember({"faces", "dump", "polygons", "rings"}))
+                    "(bounded faces with holes), rings (one ring per bounded face), even-odd (polygons of the faces "
+                    "inside an odd number of boundaries)")
+        ->check(CLI::IsMember({"faces", "dump", "polygons", "rings", "even-odd"}))
         ->type_name("KIND");
     cmd->callback([&action, path, kind] {
         action = [path, kind] {

@@ -87,7 +87,8 @@ public:
     FakeImplementation(Behaviour behaviour, FakeClock& clock, const ProcessLimits& limits, Counters& counters)
         : behaviour_(std::move(behaviour)), clock_(clock), limits_(limits), counters_(counters) {}
 
-    ProcessResult run(const std::string& text) override {
+    ProcessResult run(const std::string& text) override { return run(text, limits_.timeout); }
+    ProcessResult run(const std::string& text, milliseconds timeout) override {
         if (!started_) {
             started_ = true;
             ++counters_.starts;
@@ -95,10 +96,12 @@ public:
         ++counters_.runs;
         const PlanarGraph g = io::read_graph(text);
         Reply reply = behaviour_(Call{g, text, seen_});
-        const bool hang = reply.cost.count() < 0;
-        clock_.advance(hang ? limits_.timeout : reply.cost);
+        // A hang, or a run slower than its timeout: killed at the timeout.
+        const bool killed = reply.cost.count() < 0 || reply.cost > timeout;
+        if (killed) reply.result = hangs().result;
+        clock_.advance(killed ? timeout : reply.cost);
         seen_.push_back(text);
-        if (hang || reply.result.end != ProcessEnd::Exited || reply.result.exit_status != 0) restart();
+        if (killed || reply.result.end != ProcessEnd::Exited || reply.result.exit_status != 0) restart();
         return std::move(reply.result);
     }
     void restart() override {

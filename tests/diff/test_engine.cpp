@@ -215,5 +215,99 @@ TEST(DiffEngine, TheJsonReportIsValidWhateverTheImplementationPrinted) {
     EXPECT_NE(junit.find("\\xFF\\xFE{"), std::string::npos);
 }
 
+Reply skip(std::string reason) { return fake::answer("{\"skip\": \"" + reason + "\"}"); }
+
+TEST(DiffEngine, ASkipIsCountedByReasonAndIsNeitherAFailureNorAPass) {
+    Harness h;
+    const DiffResult some = h.run([](const Call& c) { return c.graph.vertices.size() % 2 == 1 ? skip("odd") : right(c); });
+    EXPECT_TRUE(some.failures.empty());
+    EXPECT_GT(some.skipped_by_impl, 0U);
+    ASSERT_EQ(some.skip_reasons.size(), 1U);
+    EXPECT_EQ(some.skip_reasons[0].first, "odd");
+    EXPECT_EQ(some.checked() + some.skipped_by_impl + some.skipped, some.cases_run);
+    EXPECT_TRUE(run_passes(some));
+    Harness all;
+    const DiffResult none = all.run([](const Call&) { return skip("not implemented"); });
+    EXPECT_TRUE(none.failures.empty());
+    EXPECT_EQ(none.checked(), 0U);
+    EXPECT_FALSE(run_passes(none));  // a run that checks nothing is no pass
+    EXPECT_NE(format_report(all.options, none).find("no case was checked"), std::string::npos);
+}
+
+TEST(DiffEngine, ARefusalIsOneFailureWhateverTheNumbersInItsMessage) {
+    Harness h;
+    h.options.keep_going = true;
+    h.options.cases = 150;
+    const DiffResult r = h.run([](const Call& c) {
+        for (std::size_t v = 0; v < c.graph.vertices.size(); ++v) {
+            if (degree(c.graph, v) == 0) {
+                return fake::answer("{\"refused\": \"vertex " + std::to_string(v) + " at (" +
+                                    std::to_string(c.graph.vertices[v].x) + ", 7) is isolated\"}");
+            }
+        }
+        return right(c);
+    });
+    ASSERT_EQ(r.failures.size(), 1U);
+    const Failure& f = r.failures[0];
+    EXPECT_EQ(f.example.outcome.kind, FailureKind::Refused);
+    EXPECT_EQ(f.signature, "refused: vertex # at (#, #) is isolated||1v0e");
+    EXPECT_GT(f.classes.size(), 1U);  // seen in several coordinate classes, one failure
+}
+
+TEST(DiffEngine, OneBugInSeveralCoordinateClassesIsOneFailure) {
+    Harness h;
+    h.options.keep_going = true;
+    h.options.cases = 150;
+    const DiffResult r = h.run(reverses_cycles);
+    ASSERT_EQ(r.failures.size(), 1U);
+    EXPECT_GT(r.failures[0].classes.size(), 1U);
+    EXPECT_GT(r.failures[0].keys.size(), 1U);
+}
+
+TEST(DiffEngine, ASlowButRightCaseIsAPerformanceNoteNotAHang) {
+    Harness h;
+    h.options.limits.timeout = milliseconds(1000);
+    h.options.schedule.large_vertices = 600;
+    h.options.cases = 50;  // case 49 is large
+    const DiffResult r = h.run([](const Call& c) {
+        Reply reply = right(c);
+        reply.cost = milliseconds(2 * static_cast<long>(c.graph.vertices.size() + c.graph.edges.size()));
+        return reply;
+    });
+    EXPECT_TRUE(r.failures.empty());
+    ASSERT_EQ(r.slow_count, 1U);
+    EXPECT_EQ(r.slow[0].number, 49U);
+    EXPECT_GT(r.slow[0].took, milliseconds(1000));
+    EXPECT_GE(r.slow[0].limit, r.slow[0].took);
+}
+
+TEST(DiffEngine, TimeBoundsShrinkingToo) {
+    Harness h;
+    h.options.cases.reset();
+    h.options.time = milliseconds(3000);
+    h.options.keep_going = true;
+    const DiffResult r = h.run([](const Call& c) {
+        Reply reply = reverses_cycles(c);
+        reply.cost = milliseconds(100);
+        return reply;
+    });
+    ASSERT_FALSE(r.failures.empty());
+    EXPECT_LE(r.elapsed, milliseconds(3000 + 100));  // at most one run past the deadline
+}
+
+TEST(DiffEngine, ShrinkingKeepsTheClassNotTheFirstDifference) {
+    // The first case fails with one kind of difference, smaller graphs with
+    // another: the counterexample is the smallest wrong answer.
+    Harness h;
+    const DiffResult r = h.run([](const Call& c) {
+        if (c.graph.edges.size() < 3) return right(c);
+        if (c.graph.edges.size() >= 6) return fake::answer("{\"faces\": []}");  // missing cycles
+        return reverses_cycles(c);                                          // reversed cycles
+    });
+    ASSERT_EQ(r.failures.size(), 1U);
+    EXPECT_EQ(r.failures[0].example.graph.edges.size(), 3U);
+    EXPECT_TRUE(r.failures[0].example.minimal);
+}
+
 }  // namespace
 }  // namespace dcel::diff

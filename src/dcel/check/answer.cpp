@@ -8,6 +8,7 @@
 
 #include "dcel/check/collector.hpp"
 #include "dcel/check/cycles.hpp"
+#include "dcel/format.hpp"
 #include "dcel/io/dcel_json.hpp"
 #include "dcel/io/json_writer.hpp"
 
@@ -18,12 +19,48 @@ namespace {
 // Faces: a repeated first vertex dropped, 1-based ids shifted, cycles
 // reversed for faces on the right; then matched like compare_faces.
 bool needs_rewriting(const CycleList& answer, const Conventions& c) {
-    if (c.one_based || c.face_on_right) return true;
+    if (c.one_based || c.face_on_right || c.isolated_cycles) return true;
     for (std::size_t i = 0; i < answer.size(); ++i) {
         const std::span<const Index> cycle = answer[i];
         if (cycle.size() >= 2 && cycle.front() == cycle.back()) return true;
     }
     return false;
+}
+
+// --isolated-as-cycles: the one-vertex cycles [v] of the answer are exactly
+// the isolated vertices, each once.
+void match_isolated(const Dcel& reference, const std::vector<std::pair<Index, std::size_t>>& singles,
+                    detail::Collector& out) {
+    const Index n = reference.num_vertices();
+    std::vector<char> listed(n, 0);
+    for (const auto& [v, i] : singles) {
+        const std::string cycle = "answer cycle " + std::to_string(i) + " [" + std::to_string(v) + "]";
+        if (v >= n) {
+            if (out.wants(DifferenceKind::VertexCount)) {
+                out.add(DifferenceKind::VertexCount, cycle + " names vertex " + std::to_string(v) + ", but the graph has " +
+                                                         std::to_string(n) + " vertices");
+            }
+        } else if (!reference.out(VertexId(v)).is_null()) {
+            if (out.wants(DifferenceKind::WrongIsolatedVertex)) {
+                out.add(DifferenceKind::WrongIsolatedVertex,
+                        cycle + " is a one-vertex cycle, but v" + std::to_string(v) +
+                            " has edges: only an isolated vertex is written so (--isolated-as-cycles)",
+                        {v});
+            }
+        } else if (listed[v]++ != 0 && out.wants(DifferenceKind::WrongIsolatedVertex)) {
+            out.add(DifferenceKind::WrongIsolatedVertex,
+                    cycle + " lists the isolated vertex v" + std::to_string(v) + " again", {v});
+        }
+    }
+    for (Index v = 0; v < n; ++v) {
+        if (listed[v] != 0 || !reference.out(VertexId(v)).is_null()) continue;
+        if (out.wants(DifferenceKind::WrongIsolatedVertex)) {
+            out.add(DifferenceKind::WrongIsolatedVertex,
+                    "the isolated vertex v" + std::to_string(v) + " " + format_point(reference.point(VertexId(v))) +
+                        " has no one-vertex cycle [" + std::to_string(v) + "] in the answer (--isolated-as-cycles)",
+                    {v});
+        }
+    }
 }
 
 Report compare_cycles(const Dcel& reference, const CycleList& answer, const Conventions& c) {
@@ -36,6 +73,7 @@ Report compare_cycles(const Dcel& reference, const CycleList& answer, const Conv
     }
     CycleList list;
     std::vector<std::size_t> numbering;
+    std::vector<std::pair<Index, std::size_t>> singles;  // --isolated-as-cycles: (vertex, answer cycle)
     std::size_t closed = 0;
     for (std::size_t i = 0; i < answer.size(); ++i) {
         const std::span<const Index> given = answer[i];
@@ -54,6 +92,10 @@ Report compare_cycles(const Dcel& reference, const CycleList& answer, const Conv
             vs.pop_back();
             ++closed;
         }
+        if (c.isolated_cycles && vs.size() == 1) {  // an isolated vertex, written as its own cycle
+            singles.push_back({vs.front(), i});
+            continue;
+        }
         if (c.face_on_right && !vs.empty()) std::reverse(vs.begin() + 1, vs.end());
         list.ids.insert(list.ids.end(), vs.begin(), vs.end());
         list.end_cycle();
@@ -62,6 +104,7 @@ Report compare_cycles(const Dcel& reference, const CycleList& answer, const Conv
     const detail::Reference ref(reference);
     detail::AnswerCycles labels{&list, {}, &numbering};
     (void)detail::match_cycles(ref, labels, out);
+    if (c.isolated_cycles) match_isolated(reference, singles, out);
     Report report = std::move(out).finish();
     if (closed != 0) {
         report.notes.push_back(std::to_string(closed) + (closed == 1 ? " cycle repeats its" : " cycles repeat their") +
@@ -129,6 +172,7 @@ Report compare_under(const Dcel& reference, const Answer& a, const Conventions& 
         }
         case AnswerKind::Polygons: return compare_polygons(reference, a.regions, c);
         case AnswerKind::Rings: return compare_rings(reference, a.regions, c);
+        case AnswerKind::EvenOdd: return compare_even_odd(reference, a.regions, c);
     }
     return {};
 }
@@ -141,11 +185,14 @@ std::optional<std::string> convention_hint(const Dcel& reference, const Answer& 
         Conventions conventions;
         const char* note = "";
     };
-    Conventions right = c, based = c, loose = c;
+    Conventions right = c, based = c, loose = c, singles = c, unattached = c;
     right.face_on_right = !c.face_on_right;
     based.one_based = !c.one_based;
     loose.unoriented = true;
-    const bool ids = a.kind != AnswerKind::Polygons && a.kind != AnswerKind::Rings ? true : !a.regions.by_points;
+    singles.isolated_cycles = !c.isolated_cycles;
+    unattached.holes_unattached = !c.holes_unattached;
+    const bool regions = a.kind == AnswerKind::Polygons || a.kind == AnswerKind::Rings || a.kind == AnswerKind::EvenOdd;
+    const bool ids = !regions || !a.regions.by_points;
     const Toggle toggles[] = {
         {a.kind != AnswerKind::Rings, right,
          c.face_on_right ? "the answer agrees without --face-on right: it keeps faces on the left"
@@ -155,9 +202,26 @@ std::optional<std::string> convention_hint(const Dcel& reference, const Answer& 
                      : "the answer agrees with --one-based: its ids count from 1"},
         {a.kind == AnswerKind::Polygons && !c.unoriented, loose,
          "the answer agrees with --unoriented: its rings run either way, which GeoJSON allows readers to accept"},
+        {a.kind == AnswerKind::Faces, singles,
+         c.isolated_cycles ? "the answer agrees without --isolated-as-cycles: it lists no one-vertex cycles"
+                           : "the answer agrees with --isolated-as-cycles: it writes each isolated vertex as a "
+                             "one-vertex cycle [v]"},
+        {a.kind == AnswerKind::Polygons, unattached,
+         c.holes_unattached ? "the answer agrees without --holes-unattached: it attaches holes to their polygons"
+                            : "the answer agrees with --holes-unattached: every ring is a polygon of its own and "
+                              "holes are never attached (GEOS/JTS polygonize without holes, Turf)"},
     };
     for (const Toggle& t : toggles) {
         if (t.applies && compare_under(reference, a, t.conventions).agrees()) return std::string(t.note);
+    }
+    if (a.kind == AnswerKind::Polygons) {
+        Answer as_even_odd = a;
+        as_even_odd.kind = AnswerKind::EvenOdd;
+        if (compare_under(reference, as_even_odd, c).agrees()) {
+            return std::string(
+                "the answer agrees as even-odd regions (--answer even-odd): it has the faces inside an odd number of "
+                "boundaries only");
+        }
     }
     return std::nullopt;
 }
@@ -167,7 +231,8 @@ std::string reference_answer(const Dcel& reference, AnswerKind kind) {
         case AnswerKind::Faces: return io::write_faces_of(reference);
         case AnswerKind::Dump: return io::write_dump(to_dump(reference), io::DumpStyle::Compact);
         case AnswerKind::Polygons:
-        case AnswerKind::Rings: break;
+        case AnswerKind::Rings:
+        case AnswerKind::EvenOdd: break;
     }
     const bool rings = kind == AnswerKind::Rings;
     std::string out;

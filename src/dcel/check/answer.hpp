@@ -35,9 +35,13 @@
 
 namespace dcel::check {
 
-enum class AnswerKind : std::uint8_t { Faces, Dump, Polygons, Rings };
+// EvenOdd: polygons of the even-odd regions only (the bounded faces inside
+// an odd number of boundaries), as polygonizers that fill by the even-odd
+// rule return them; read like polygons, never detected from a shape alone.
+enum class AnswerKind : std::uint8_t { Faces, Dump, Polygons, Rings, EvenOdd };
+inline constexpr std::size_t kAnswerKindCount = 5;
 
-[[nodiscard]] std::string_view answer_kind_name(AnswerKind k);  // "faces", "dump", "polygons", "rings"
+[[nodiscard]] std::string_view answer_kind_name(AnswerKind k);  // "faces", "dump", "polygons", "rings", "even-odd"
 [[nodiscard]] std::optional<AnswerKind> answer_kind_from_name(std::string_view name);
 
 // How an answer's numbers and directions are to be read.
@@ -50,6 +54,13 @@ struct Conventions {
     // Polygons: each ring may run either way (the shell is still the first
     // ring). Rings are always compared this way: the kind fixes no direction.
     bool unoriented = false;
+    // Faces: each isolated vertex is written as the one-vertex cycle [v]
+    // (face enumerators that list every vertex's cycles do).
+    bool isolated_cycles = false;
+    // Polygons: holes are never attached, every ring is its own polygon
+    // (GEOS/JTS polygonize without hole assignment, Turf): each polygon is a
+    // bounded face's outer boundary filled in, compared as the rings kind.
+    bool holes_unattached = false;
 };
 
 // The polygons and rings kinds, flat: ring r is points [ring_begin[r],
@@ -115,5 +126,13 @@ struct Answer {
 [[nodiscard]] Report compare_polygons(const Dcel& reference, const RegionAnswer& answer,
                                       const Conventions& conventions = {});
 [[nodiscard]] Report compare_rings(const Dcel& reference, const RegionAnswer& answer, const Conventions& conventions = {});
+[[nodiscard]] Report compare_even_odd(const Dcel& reference, const RegionAnswer& answer,
+                                      const Conventions& conventions = {});
+
+// Which bounded faces are even-odd regions: inside an odd number of
+// boundaries, i.e. across an odd number of edges from the unbounded face
+// (dangling edges and bridges, with one face on both sides, count twice).
+// Index: face id; the unbounded face is even.
+[[nodiscard]] std::vector<char> odd_faces(const Dcel& reference);
 
 }  // namespace dcel::check

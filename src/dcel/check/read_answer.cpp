@@ -19,7 +19,7 @@ namespace {
 using io::JsonReader;
 using io::JsonType;
 
-constexpr std::array<std::string_view, 4> kKindNames{"faces", "dump", "polygons", "rings"};
+constexpr std::array<std::string_view, kAnswerKindCount> kKindNames{"faces", "dump", "polygons", "rings", "even-odd"};
 
 constexpr std::string_view kFacesForms = R"({"faces": [[v, ...], ...]} or [[v, ...], ...])";
 constexpr std::string_view kPolygonsForms =
@@ -457,7 +457,8 @@ Answer read_answer(std::string_view text, std::optional<AnswerKind> kind) {
     switch (a.kind) {
         case AnswerKind::Faces: a.cycles = read_faces(text); break;
         case AnswerKind::Dump: a.dump = io::read_dump(text); break;
-        case AnswerKind::Polygons: a.regions = read_polygons(text); break;
+        case AnswerKind::Polygons:
+        case AnswerKind::EvenOdd: a.regions = read_polygons(text); break;
         case AnswerKind::Rings: a.regions = read_rings(text); break;
     }
     return a;

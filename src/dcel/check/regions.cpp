@@ -110,10 +110,26 @@ struct MappedRing {
     bool ok = false;
 };
 
+// What the answer's regions are compared with, and what they are called.
+enum class Regions : std::uint8_t {
+    Polygons,       // every bounded face, with holes
+    Rings,          // every bounded face, filled in
+    UnattachedHoles,  // polygons with --holes-unattached: compared as rings, called polygons
+    EvenOdd,        // the bounded faces inside an odd number of boundaries, with holes
+};
+
 class RegionComparison {
 public:
-    RegionComparison(const Dcel& reference, const RegionAnswer& answer, const Conventions& conventions, bool rings)
-        : d_(reference), ref_(reference), answer_(answer), conventions_(conventions), rings_(rings) {
+    RegionComparison(const Dcel& reference, const RegionAnswer& answer, const Conventions& conventions, Regions regions)
+        : d_(reference),
+          ref_(reference),
+          answer_(answer),
+          conventions_(conventions),
+          rings_(regions == Regions::Rings || regions == Regions::UnattachedHoles),
+          named_rings_(regions == Regions::Rings),
+          unattached_(regions == Regions::UnattachedHoles),
+          even_odd_(regions == Regions::EvenOdd) {
+        if (even_odd_) odd_ = odd_faces(reference);
         if (answer.by_points) {
             for (Index v = 0; v < d_.num_vertices(); ++v) vertex_at_.emplace(key(d_.point(VertexId(v))), v);
         }
@@ -125,6 +141,7 @@ public:
         std::vector<Index> polygon_of_face(d_.num_faces(), kNoIndex);
         std::size_t closed = 0;
         for (std::size_t p = 0; p < answer_.polygon_count(); ++p) {
+            if (unattached_ && has_holes(p)) continue;
             std::map<Index, int> counts;
             bool ok = true;
             std::vector<Index> shell_vertices;
@@ -145,14 +162,19 @@ public:
             match(p, to_chain(counts), shell_vertices, explained, polygon_of_face);
         }
         for (Index f = 1; f < d_.num_faces(); ++f) {
+            if (even_odd_ && odd_[f] == 0) continue;  // not a region of the even-odd rule
             if (explained[f] != 0 || !out_.wants(DifferenceKind::MissingFace)) continue;
             const std::vector<Index> vs = ref_.cycle_vertices(ref_.cycle_of(d_.outer(FaceId(f))));
             out_.add(DifferenceKind::MissingFace,
                      "the reference's " + face_text(ref_, FaceId(f)) + " has no " +
-                         std::string(rings_ ? "ring" : "polygon") + " in the answer",
+                         std::string(named_rings_ ? "ring" : "polygon") + " in the answer",
                      vs);
         }
         Report report = std::move(out_).finish();
+        if (unattached_) {
+            report.notes.emplace_back(
+                "holes read as never attached (--holes-unattached): each polygon is a face's outer boundary, filled in");
+        }
         if (closed != 0) {
             report.notes.push_back(std::to_string(closed) + (closed == 1 ? " ring repeats its" : " rings repeat their") +
                                    " first point at the end: read as closed");
@@ -175,8 +197,21 @@ private:
         }
     };
 
+    // With --holes-unattached every ring is a polygon of its own: a polygon
+    // with holes is reported, and not compared.
+    bool has_holes(std::size_t p) {
+        const std::size_t rings = answer_.polygon_begin[p + 1] - answer_.polygon_begin[p];
+        if (rings <= 1) return false;
+        if (out_.wants(DifferenceKind::ExtraPolygon)) {
+            out_.add(DifferenceKind::ExtraPolygon, "polygon " + std::to_string(p) + " has " + std::to_string(rings - 1) +
+                                                       (rings == 2 ? " hole" : " holes") +
+                                                       "; with --holes-unattached every ring is a polygon of its own");
+        }
+        return true;
+    }
+
     std::string ring_label(std::size_t p, std::size_t r) const {
-        std::string what = rings_ ? "ring " + std::to_string(p) : "polygon " + std::to_string(p);
+        std::string what = named_rings_ ? "ring " + std::to_string(p) : "polygon " + std::to_string(p);
         if (rings_) return what;
         const std::size_t first = answer_.polygon_begin[p];
         return what + (r == first ? "'s shell" : "'s hole " + std::to_string(r - first - 1));
@@ -293,7 +328,7 @@ private:
 
     void match(std::size_t p, const Chain& chain, const std::vector<Index>& shell, std::vector<char>& explained,
                std::vector<Index>& polygon_of_face) {
-        const std::string what = rings_ ? "ring " + std::to_string(p) : "polygon " + std::to_string(p);
+        const std::string what = named_rings_ ? "ring " + std::to_string(p) : "polygon " + std::to_string(p);
         const std::string shown = what + " " + detail::cycle_text(shell);
         if (chain.empty()) {
             if (out_.wants(DifferenceKind::ExtraPolygon)) {
@@ -316,12 +351,21 @@ private:
         }
         if (const auto it = face_of_chain_.find(chain); it != face_of_chain_.end()) {
             const Index f = it->second;
+            if (even_odd_ && odd_[f] == 0) {
+                if (out_.wants(DifferenceKind::ExtraPolygon)) {
+                    out_.add(DifferenceKind::ExtraPolygon,
+                             shown + " is " + face_text(ref_, FaceId(f)) +
+                                 ", which lies inside an even number of boundaries: no even-odd region",
+                             shell);
+                }
+                return;
+            }
             if (polygon_of_face[f] == kNoIndex) {
                 polygon_of_face[f] = static_cast<Index>(p);
                 explained[f] = 1;
             } else if (out_.wants(DifferenceKind::ExtraPolygon)) {
                 out_.add(DifferenceKind::ExtraPolygon,
-                         shown + " repeats " + (rings_ ? "ring " : "polygon ") + std::to_string(polygon_of_face[f]) +
+                         shown + " repeats " + (named_rings_ ? "ring " : "polygon ") + std::to_string(polygon_of_face[f]) +
                              ": the reference has " + face_text(ref_, FaceId(f)) + " once",
                          shell);
             }
@@ -341,7 +385,7 @@ private:
             }
             only = f;
         }
-        if (one_face && !rings_) {
+        if (one_face && !rings_ && (!even_odd_ || odd_[only.index()] != 0)) {
             explained[only.index()] = 1;
             if (out_.wants(DifferenceKind::WrongHole)) {
                 out_.add(DifferenceKind::WrongHole,
@@ -408,7 +452,11 @@ private:
     detail::Reference ref_;
     const RegionAnswer& answer_;
     const Conventions& conventions_;
-    bool rings_;
+    bool rings_;        // compared as filled-in outer boundaries
+    bool named_rings_;  // and called rings in messages (the rings kind)
+    bool unattached_;   // polygons with --holes-unattached
+    bool even_odd_;     // only the odd faces are regions
+    std::vector<char> odd_;
     detail::Collector out_;
     std::vector<Chain> chains_;
     std::map<Chain, Index> face_of_chain_;
@@ -452,21 +500,54 @@ std::vector<std::vector<Index>> loops(const Dcel& d, const Chain& chain) {
 
 }  // namespace
 
+std::vector<char> odd_faces(const Dcel& reference) {
+    // Breadth first over the faces, from the unbounded one: crossing an edge
+    // with different faces on its sides flips the parity. Every such crossing
+    // agrees (the parity of a point is that of the edges a ray from it
+    // crosses), so the first one found decides.
+    const std::size_t n = reference.num_faces();
+    std::vector<std::vector<Index>> across(n);
+    for (Index h = 0; h < reference.num_half_edges(); ++h) {
+        const FaceId f = reference.face(HalfEdgeId(h)), g = reference.face(twin(HalfEdgeId(h)));
+        if (f != g) across[f.index()].push_back(g.index());
+    }
+    std::vector<char> odd(n, 0), seen(n, 0);
+    std::vector<Index> queue{Dcel::kUnboundedFace.index()};
+    seen[Dcel::kUnboundedFace.index()] = 1;
+    for (std::size_t i = 0; i < queue.size(); ++i) {
+        for (const Index g : across[queue[i]]) {
+            if (seen[g] != 0) continue;
+            seen[g] = 1;
+            odd[g] = static_cast<char>(odd[queue[i]] == 0 ? 1 : 0);
+            queue.push_back(g);
+        }
+    }
+    return odd;
+}
+
 std::vector<std::vector<std::vector<Index>>> reference_regions(const Dcel& reference, AnswerKind kind) {
     std::vector<std::vector<std::vector<Index>>> out;
     const std::vector<Chain> polygons = kind == AnswerKind::Rings ? std::vector<Chain>{} : polygon_chains(reference);
+    const std::vector<char> odd = kind == AnswerKind::EvenOdd ? odd_faces(reference) : std::vector<char>{};
     for (Index f = 1; f < reference.num_faces(); ++f) {
+        if (kind == AnswerKind::EvenOdd && odd[f] == 0) continue;
         out.push_back(loops(reference, kind == AnswerKind::Rings ? ring_chain(reference, FaceId(f)) : polygons[f]));
     }
     return out;
 }
 
 Report compare_polygons(const Dcel& reference, const RegionAnswer& answer, const Conventions& conventions) {
-    return RegionComparison(reference, answer, conventions, false).run();
+    return RegionComparison(reference, answer, conventions,
+                            conventions.holes_unattached ? Regions::UnattachedHoles : Regions::Polygons)
+        .run();
 }
 
 Report compare_rings(const Dcel& reference, const RegionAnswer& answer, const Conventions& conventions) {
-    return RegionComparison(reference, answer, conventions, true).run();
+    return RegionComparison(reference, answer, conventions, Regions::Rings).run();
+}
+
+Report compare_even_odd(const Dcel& reference, const RegionAnswer& answer, const Conventions& conventions) {
+    return RegionComparison(reference, answer, conventions, Regions::EvenOdd).run();
 }
 
 }  // namespace dcel::check

@@ -11,10 +11,15 @@ public:
     CommandImplementation(std::string command, bool stream, const ProcessLimits& limits)
         : command_(std::move(command)), stream_(stream), limits_(limits) {}
 
-    ProcessResult run(const std::string& text) override {
-        if (!stream_) return run_command(command_, text, limits_);
+    ProcessResult run(const std::string& text) override { return run(text, limits_.timeout); }
+    ProcessResult run(const std::string& text, std::chrono::milliseconds timeout) override {
+        if (!stream_) {
+            ProcessLimits limits = limits_;
+            limits.timeout = timeout;
+            return run_command(command_, text, limits);
+        }
         if (!process_) process_ = std::make_unique<StreamProcess>(command_ + " --stream", limits_);
-        StreamProcess::Reply reply = process_->exchange(std::string_view(text).substr(0, text.size() - 1));
+        StreamProcess::Reply reply = process_->exchange(std::string_view(text).substr(0, text.size() - 1), timeout);
         if (!reply.answered) return std::move(reply.failure);
         ProcessResult r;
         r.out = std::move(reply.line);

@@ -6,11 +6,11 @@
 // without processes.
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <functional>
 #include <memory>
 #include <string>
-#include <vector>
 
 #include "dcel/diff/process.hpp"
 
@@ -23,20 +23,16 @@ public:
     Implementation& operator=(const Implementation&) = delete;
     virtual ~Implementation() = default;
 
-    // text is one line ending in '\n'.
+    // text is one line ending in '\n'; the run is killed (TimedOut) after
+    // `timeout`.
+    [[nodiscard]] virtual ProcessResult run(const std::string& text, std::chrono::milliseconds timeout) = 0;
+    // With the limits' own timeout.
     [[nodiscard]] virtual ProcessResult run(const std::string& text) = 0;
     // The next run starts from a fresh process (a stream's state is gone).
     virtual void restart() = 0;
     // How many times a process was started (a stream: 1 + the restarts;
     // one process per graph: 0, since every run is a start).
     [[nodiscard]] virtual std::size_t starts() const = 0;
-
-    // In a fresh process: the prefix graphs (their answers unread), then text.
-    [[nodiscard]] ProcessResult run_after(const std::vector<std::string>& prefix, const std::string& text) {
-        restart();
-        for (const std::string& p : prefix) (void)run(p);
-        return run(text);
-    }
 };
 
 // Makes an implementation with the given limits (the shrinker runs a hang's

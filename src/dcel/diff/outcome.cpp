@@ -2,8 +2,10 @@
 
 #include <algorithm>
 
+#include "dcel/diff/failure_class.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
+#include "dcel/io/json_reader.hpp"
 
 namespace dcel::diff {
 
@@ -14,6 +16,7 @@ std::string_view failure_name(FailureKind k) {
         case FailureKind::Timeout: return "timeout";
         case FailureKind::Unparsable: return "unparsable answer";
         case FailureKind::WrongAnswer: return "wrong answer";
+        case FailureKind::Refused: return "refused";
     }
     return "?";
 }
@@ -67,7 +70,9 @@ std::vector<std::vector<std::vector<Index>>> regions_of(const check::Answer& a, 
                                                         const check::Conventions& c) {
     std::vector<std::vector<std::vector<Index>>> out;
     const check::RegionAnswer& r = a.regions;
-    if (a.kind != check::AnswerKind::Polygons && a.kind != check::AnswerKind::Rings) return out;
+    if (a.kind != check::AnswerKind::Polygons && a.kind != check::AnswerKind::Rings && a.kind != check::AnswerKind::EvenOdd) {
+        return out;
+    }
     if (r.ids.size() + r.points.size() > kMaxDrawnIds) return out;
     auto vertex_at = [&](Point p) {
         for (Index v = 0; v < reference.num_vertices(); ++v) {
@@ -145,6 +150,14 @@ Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimi
         return failed(FailureKind::Unparsable,
                       run.out.empty() ? "printed nothing on stdout" : "printed only blanks on stdout", run);
     }
+    if (std::optional<ProtocolReply> reply = protocol_reply(run.out)) {
+        if (!reply->skip) return failed(FailureKind::Refused, "refused: " + printable(reply->text, 300), run);
+        Outcome o;
+        o.run = run;
+        o.skipped = true;
+        o.skip_reason = escape_for_message(reply->text, 120);
+        return o;
+    }
     const std::optional<check::AnswerKind> given = judging.options.kind;
     check::Answer answer;
     try {
@@ -192,28 +205,87 @@ Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimi
     return worst;
 }
 
-bool same_failure(const Outcome& a, const Outcome& b) {
-    if (a.agrees || b.agrees || a.kind != b.kind) return false;
-    switch (a.kind) {
-        case FailureKind::Crash: return a.run.signal == b.run.signal;
-        case FailureKind::NonZeroExit: return a.run.exit_status == b.run.exit_status;
-        case FailureKind::WrongAnswer: return a.report.differences.front().kind == b.report.differences.front().kind;
-        case FailureKind::Timeout:
-        case FailureKind::Unparsable: return true;
+std::optional<ProtocolReply> protocol_reply(std::string_view out) {
+    try {
+        io::JsonReader r(out);
+        if (r.peek() != io::JsonType::Object) return std::nullopt;
+        r.begin_object("an object");
+        if (!r.next_member()) return std::nullopt;
+        const bool skip = r.key() == "skip";
+        if ((!skip && r.key() != "refused") || r.peek() != io::JsonType::String) return std::nullopt;
+        ProtocolReply reply{skip, r.read_string()};
+        if (r.next_member()) return std::nullopt;  // one member, or it is some other answer
+        r.end_document();
+        return reply;
+    } catch (const InvalidInput&) {
+        return std::nullopt;  // not JSON at all: read_answer says why
     }
-    return false;
 }
 
-std::string failure_key(const Outcome& o) {
-    switch (o.kind) {
-        case FailureKind::Crash: return "crash/" + std::to_string(o.run.signal);
-        case FailureKind::NonZeroExit: return "exit/" + std::to_string(o.run.exit_status);
-        case FailureKind::WrongAnswer:
-            return "wrong-answer/" + std::string(check::kind_name(o.report.differences.front().kind));
-        case FailureKind::Timeout: return "timeout";
-        case FailureKind::Unparsable: return "unparsable";
+std::string difference_kinds(const Outcome& o) {
+    if (o.kind != FailureKind::WrongAnswer) return {};
+    std::vector<std::string_view> kinds;
+    for (const check::Difference& d : o.report.differences) kinds.push_back(check::kind_name(d.kind));
+    std::sort(kinds.begin(), kinds.end());
+    kinds.erase(std::unique(kinds.begin(), kinds.end()), kinds.end());
+    std::string s;
+    for (const std::string_view k : kinds) s += (s.empty() ? "" : "+") + std::string(k);
+    return s;
+}
+
+namespace {
+
+// Wrong answers come in families: what a shrinking wrong answer may turn
+// into and still be the same bug (a wrong rotation shows as wrong-next on a
+// large graph and as reversed-cycle on a claw), and what it may not (a
+// one-vertex cycle for an isolated vertex is another bug, whatever graph
+// shows it).
+std::string_view difference_family(check::DifferenceKind k) {
+    using check::DifferenceKind;
+    switch (k) {
+        case DifferenceKind::WrongNext:
+        case DifferenceKind::ReversedCycle:
+        case DifferenceKind::MissingCycle:
+        case DifferenceKind::ExtraCycle:
+        case DifferenceKind::WrongOrientation: return "cycles";
+        case DifferenceKind::VertexCount:
+        case DifferenceKind::NotAVertex:
+        case DifferenceKind::NotAnEdge:
+        case DifferenceKind::WrongPoint: return "names";
+        case DifferenceKind::WrongHole:
+        case DifferenceKind::WrongOuterBoundary:
+        case DifferenceKind::WrongIsolatedVertex:
+        case DifferenceKind::MissingFace:
+        case DifferenceKind::ExtraPolygon: return "faces";
+        case DifferenceKind::BrokenInvariant: return "invariants";
+        case DifferenceKind::UnreadableAnswer: return "unreadable";
     }
     return "?";
+}
+
+}  // namespace
+
+std::string failure_class(const Outcome& o) {
+    switch (o.kind) {
+        case FailureKind::Crash: return "crash/" + std::to_string(o.run.signal);
+        case FailureKind::NonZeroExit: {
+            const std::string line = message_class(meaningful_line(o.run.err_tail));
+            return "exit/" + std::to_string(o.run.exit_status) + (line.empty() ? "" : ": " + line);
+        }
+        case FailureKind::WrongAnswer:
+            return "wrong-answer/" + std::string(difference_family(o.report.differences.front().kind));
+        case FailureKind::Timeout: return "timeout";
+        case FailureKind::Unparsable: return "unparsable";
+        case FailureKind::Refused: {
+            const std::optional<ProtocolReply> reply = protocol_reply(o.run.out);
+            return "refused: " + message_class(reply ? reply->text : o.what);
+        }
+    }
+    return "?";
+}
+
+bool same_failure(const Outcome& a, const Outcome& b) {
+    return !a.agrees && !b.agrees && failure_class(a) == failure_class(b);
 }
 
 std::string failure_label(const Outcome& o) {
@@ -224,7 +296,8 @@ std::string failure_label(const Outcome& o) {
         case FailureKind::WrongAnswer:
             return label + " (" + std::string(check::kind_name(o.report.differences.front().kind)) + ")";
         case FailureKind::Timeout:
-        case FailureKind::Unparsable: break;
+        case FailureKind::Unparsable:
+        case FailureKind::Refused: break;
     }
     return label;
 }

@@ -20,17 +20,22 @@ namespace dcel::diff {
 enum class FailureKind : std::uint8_t {
     Crash,        // killed by a signal (or /bin/sh exited with 128 + its number)
     NonZeroExit,  // exited with a status other than 0
-    Timeout,      // no answer within --timeout-ms
+    Timeout,      // no answer within the case's time limit: a hang
     Unparsable,   // stdout is no answer of the expected kind (empty, garbage, too large)
     WrongAnswer,  // an answer that differs from the reference
+    Refused,      // {"refused": "message"}: the implementation refused a graph the reference accepts
 };
 
 [[nodiscard]] std::string_view failure_name(FailureKind k);  // "crash", "non-zero exit", ...
 
 struct Outcome {
     bool agrees = true;
+    // {"skip": "reason"}: the graph is outside what the implementation
+    // promises (agrees is true: not a failure; counted by reason).
+    bool skipped = false;
+    std::string skip_reason;
     FailureKind kind = FailureKind::WrongAnswer;
-    std::string what;      // one line: the exit status, the parse error, the first difference
+    std::string what;      // one line: the exit status, the parse error, the first difference, the refusal
     check::Report report;  // the differences, for a wrong answer
     ProcessResult run;     // what the command did (a crash reported by sh as Signalled)
     check::AnswerKind answer_kind = check::AnswerKind::Faces;  // how the answer was read
@@ -45,21 +50,41 @@ struct Outcome {
 // empty list) agreed as so far, so a failure is judged as the likeliest.
 struct AnswerJudging {
     AnswerOptions options;
-    std::array<std::size_t, 4> agreed_as{};
+    std::array<std::size_t, check::kAnswerKindCount> agreed_as{};
 };
 
 [[nodiscard]] Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits,
                             AnswerJudging& judging);
 
-// Same kind, and the same signal, exit status or kind of first difference.
+// The protocol's own answers (docs/checking.md): {"skip": "reason"} for a
+// graph outside the implementation's domain, {"refused": "message"} for one
+// it refuses. Anything else: nothing.
+struct ProtocolReply {
+    bool skip = false;  // otherwise a refusal
+    std::string text;   // the reason or the message
+};
+[[nodiscard]] std::optional<ProtocolReply> protocol_reply(std::string_view out);
+
+// The class of a failure, what shrinking keeps and what groups start from:
+// "wrong-answer/<family>" (the family of its first difference: "cycles" for
+// wrong-next, reversed-cycle, missing-cycle, extra-cycle and
+// wrong-orientation; "names" for vertex-count, not-a-vertex, not-an-edge and
+// wrong-point; "faces" for wrong-hole, wrong-outer-boundary,
+// wrong-isolated-vertex, missing-face and extra-polygon; "invariants" for
+// broken-invariant), "crash/11", "exit/3: <the error line of stderr,
+// numbers masked>", "timeout", "unparsable", "refused: <message, numbers
+// masked>".
+[[nodiscard]] std::string failure_class(const Outcome& o);
+
+// Both failures, of the same class: shrinking may take one for the other.
 [[nodiscard]] bool same_failure(const Outcome& a, const Outcome& b);
 
-// "wrong answer (reversed-cycle)", "crash (signal 11)", "non-zero exit (status 1)", "timeout".
+// "wrong answer (reversed-cycle)", "crash (signal 11)", "non-zero exit (status 1)", "timeout", "refused".
 [[nodiscard]] std::string failure_label(const Outcome& o);
 
-// A short stable key of the failure's kind: "wrong-answer/reversed-cycle",
-// "crash/11", "exit/3", "timeout", "unparsable".
-[[nodiscard]] std::string failure_key(const Outcome& o);
+// A wrong answer's kinds of difference, sorted and joined by '+'
+// ("missing-cycle+reversed-cycle"); "" for other failures.
+[[nodiscard]] std::string difference_kinds(const Outcome& o);
 
 // At most max_bytes of a program's output, escaped as every message is
 // (dcel::escape_for_message), and how long it was when it is cut.

@@ -399,9 +399,11 @@ void StreamProcess::start() {
     ++starts_;
 }
 
-StreamProcess::Reply StreamProcess::exchange(std::string_view line) {
+StreamProcess::Reply StreamProcess::exchange(std::string_view line) { return exchange(line, limits_.timeout); }
+
+StreamProcess::Reply StreamProcess::exchange(std::string_view line, std::chrono::milliseconds timeout) {
     if (pid_ < 0) start();
-    const Clock::time_point deadline = Clock::now() + limits_.timeout;
+    const Clock::time_point deadline = Clock::now() + timeout;
     std::string payload(line);
     payload += '\n';
     std::string_view input = payload;

@@ -70,8 +70,9 @@ public:
         ProcessResult failure;  // when not answered: how the process ended
     };
     // Writes `line` (which must not contain '\n') and a '\n', then waits for
-    // the next non-blank line of output.
+    // the next non-blank line of output, at most `timeout` (the limits' by default).
     [[nodiscard]] Reply exchange(std::string_view line);
+    [[nodiscard]] Reply exchange(std::string_view line, std::chrono::milliseconds timeout);
 
     // Closes its stdin, gives it a moment to exit, then kills its group.
     void stop();

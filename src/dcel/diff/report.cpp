@@ -1,4 +1,5 @@
 #include "dcel/diff/report.hpp"
+#include "dcel/diff/failure_class.hpp"
 
 #include <sstream>
 
@@ -68,28 +69,39 @@ std::string cases_list(const Failure& f) {
     return s;
 }
 
-}  // namespace
-
-void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f) {
-    const Counterexample& c = f.example;
-    const Outcome& o = c.outcome;
+// How shrinking went: 1-minimal, or stopped by its budget; the kind the
+// counterexample ended with when it is not the first case's.
+void shrink_text(std::ostream& s, const DiffOptions& options, const Counterexample& c) {
+    const std::string budget = c.budget_spent ? ", stopped by the shrink budget" : "";
     if (!c.reproduced) {
         s << "not shrunk: run again in a fresh process" << (options.stream ? ", alone or after the graphs before it," : ",")
           << " the case did not fail the same way, so the command is not deterministic"
           << (options.stream ? " or depends on more than the last 8 graphs" : "") << "\n";
     } else if (c.steps == 0) {
         s << "no smaller graph fails the same way (" << count(c.attempts, "attempt") << " in " << seconds(c.shrink_elapsed)
-          << (c.budget_spent ? ", stopped by the shrink budget" : "") << ")\n";
+          << budget << ")\n";
     } else {
         s << "shrunk in " << seconds(c.shrink_elapsed) << " (" << count(c.attempts, "attempt") << ", "
-          << count(c.steps, "smaller failing graph") << " kept" << (c.budget_spent ? ", stopped by the shrink budget" : "")
-          << ") to a graph that fails the same way\n";
+          << count(c.steps, "smaller failing graph") << " kept" << budget << ") to a graph that fails the same way"
+          << (c.minimal ? "; no single vertex, edge or coordinate simplification of it does (1-minimal)" : "") << "\n";
+        if (failure_label(c.outcome) != failure_label(c.first)) {
+            s << "(the case failed as " << failure_label(c.first) << "; the counterexample as "
+              << failure_label(c.outcome) << ": the same class of failure)\n";
+        }
     }
     if (c.shrink_timeout) {
         s << "(a hang: candidates ran with a " << c.shrink_timeout->count()
-          << " ms timeout, 5 times the slowest passing case; the counterexample hangs for the full --timeout-ms "
-          << options.limits.timeout.count() << ")\n";
+          << " ms timeout, 5 times the slowest passing case; the counterexample hangs for the case's full limit of "
+          << c.limit.count() << " ms)\n";
     }
+}
+
+}  // namespace
+
+void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f) {
+    const Counterexample& c = f.example;
+    const Outcome& o = c.outcome;
+    shrink_text(s, options, c);
     s << "counterexample: " << size_of(c.graph) << "\n\n";
     if (!c.prefix.empty()) {
         s << "it fails only after " << count(c.prefix.size(), "other graph")
@@ -184,6 +196,8 @@ std::string run_arguments(const DiffOptions& options) {
     if (options.answer.conventions.face_on_right) a += " --face-on right";
     if (options.answer.conventions.one_based) a += " --one-based";
     if (options.answer.conventions.unoriented) a += " --unoriented";
+    if (options.answer.conventions.isolated_cycles) a += " --isolated-as-cycles";
+    if (options.answer.conventions.holes_unattached) a += " --holes-unattached";
     return a;
 }
 
@@ -204,14 +218,75 @@ std::string replay_command(const DiffOptions& options, std::size_t case_number) 
            std::to_string(options.limits.timeout.count());
 }
 
+namespace {
+
+// The classes a failure was seen in: "tiny and huge coordinates".
+std::string classes_text(const Failure& f) {
+    std::string s;
+    for (std::size_t i = 0; i < f.classes.size(); ++i) {
+        s += i == 0 ? "" : (i + 1 == f.classes.size() ? " and " : ", ");
+        s += gen::coordinate_class_name(f.classes[i]);
+    }
+    return s + " coordinates";
+}
+
+// Cases the implementation skipped, by reason; said prominently when they are
+// most of the run, since a skip is never a pass.
+void skips_text(std::ostream& s, const DiffResult& result) {
+    if (result.skipped_by_impl == 0) return;
+    const bool most = result.skipped_by_impl * 2 > result.cases_run - result.skipped;
+    s << (most ? "warning: the implementation skipped most cases: " : "the implementation skipped ")
+      << count(result.skipped_by_impl, "case") << " of " << count(result.cases_run - result.skipped, "case")
+      << " ({\"skip\": reason}); only " << result.checked() << " were checked:\n";
+    for (const auto& [reason, n] : result.skip_reasons) s << "  " << n << " x " << reason << "\n";
+}
+
+void slow_text(std::ostream& s, const DiffOptions& options, const DiffResult& result) {
+    if (result.slow_count == 0) return;
+    s << "performance: " << count(result.slow_count, "case") << " took longer than --timeout-ms "
+      << options.limits.timeout.count()
+      << " but finished within the limit scaled from this program's speed on smaller cases (not failures):\n";
+    for (const SlowCase& c : result.slow) {
+        s << "  case " << c.number << " (" << gen::family_name(c.family) << ", " << c.vertices << " vertices, " << c.edges
+          << " edges): " << seconds(c.took) << " (limit " << seconds(c.limit) << ")\n";
+    }
+    if (result.slow_count > result.slow.size()) s << "  ...\n";
+}
+
+void agreement_text(std::ostream& s, const DiffOptions& options, const DiffResult& result) {
+    if (result.checked() == 0 && result.cases_run > 0) {
+        s << "dcel diff: no case was checked in " << count(result.cases_run, "case") << range_text(options, result)
+          << ": a run that checks nothing is not a pass\n";
+    } else {
+        s << "dcel diff: agrees on " << count(result.checked(), "case") << range_text(options, result) << " in "
+          << seconds(result.elapsed) << stop_text(result) << "\n";
+    }
+    if (result.skipped != 0) {
+        s << "(" << count(result.skipped, "case") << " skipped: no graph in the allowed coordinate classes)\n";
+    }
+}
+
+// The failure's one-line label with the error line of its stderr, when it
+// has one (the implementation's own message, not its banner or trace).
+std::string label_with_error_line(const Outcome& o) {
+    std::string label = failure_label(o);
+    if (o.kind == FailureKind::NonZeroExit || o.kind == FailureKind::Crash) {
+        const std::string line = meaningful_line(o.run.err_tail);
+        if (!line.empty()) label += ": " + printable(line, 120);
+    }
+    return label;
+}
+
+}  // namespace
+
+bool run_passes(const DiffResult& result) { return result.failures.empty() && (result.checked() > 0 || result.cases_run == 0); }
+
 std::string format_report(const DiffOptions& options, const DiffResult& result) {
     std::ostringstream s;
     if (result.failures.empty()) {
-        s << "dcel diff: agrees on " << count(result.cases_run - result.skipped, "case") << range_text(options, result)
-          << " in " << seconds(result.elapsed) << stop_text(result) << "\n";
-        if (result.skipped != 0) {
-            s << "(" << count(result.skipped, "case") << " skipped: no graph in the allowed coordinate classes)\n";
-        }
+        agreement_text(s, options, result);
+        skips_text(s, result);
+        slow_text(s, options, result);
         return s.str();
     }
     const bool several = options.keep_going;
@@ -222,11 +297,12 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
     for (const Failure& f : result.failures) {
         const Counterexample& c = f.example;
         if (several) {
-            s << "\nfailure " << f.id << " of " << result.failures.size() << ": " << failure_label(c.first) << " on case "
-              << c.original.spec.number << " (" << case_text(c.original) << "), found after " << seconds(f.found_after)
-              << "; " << count(f.occurrences, "case") << " failed this way (" << cases_list(f) << ")\n";
+            s << "\nfailure " << f.id << " of " << result.failures.size() << ": " << label_with_error_line(c.first)
+              << " on case " << c.original.spec.number << " (" << case_text(c.original) << "), found after "
+              << seconds(f.found_after) << "; " << count(f.occurrences, "case") << " failed this way ("
+              << cases_list(f) << "), in " << classes_text(f) << "\n";
         } else {
-            s << "dcel diff: " << failure_label(c.first) << " on case " << c.original.spec.number << " ("
+            s << "dcel diff: " << label_with_error_line(c.first) << " on case " << c.original.spec.number << " ("
               << case_text(c.original) << ", seed " << options.schedule.seed << "), found in " << seconds(f.found_after)
               << " after " << count(c.original.spec.number - result.first_case, "agreeing case") << "\n";
         }
@@ -236,12 +312,15 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
         s << "\n--stream: \"CMD --stream\" was started " << result.restarts + 1
           << " times: for the run, then afresh to replay failing cases and after each crash or timeout\n";
     }
+    if (result.skipped_by_impl > 0 || result.slow_count > 0) s << "\n";
+    skips_text(s, result);
+    slow_text(s, options, result);
     if (several) {
         s << "\nsummary: " << count(result.failures.size(), "distinct failure") << " in " << count(result.cases_run, "case")
           << "\n";
         for (const Failure& f : result.failures) {
-            s << "  " << f.id << ". " << failure_label(f.example.first) << ": " << count(f.occurrences, "case")
-              << ", shrunk to " << size_of(f.example.graph) << " ("
+            s << "  " << f.id << ". " << label_with_error_line(f.example.outcome) << ": " << count(f.occurrences, "case")
+              << " in " << classes_text(f) << ", shrunk to " << size_of(f.example.graph) << " ("
               << gen::coordinate_class_name(gen::classify(f.example.graph)) << " coordinates)\n";
         }
     }

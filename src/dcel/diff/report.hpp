@@ -18,6 +18,10 @@ inline constexpr std::size_t kShownBytes = 2000;
 
 [[nodiscard]] std::string format_report(const DiffOptions& options, const DiffResult& result);
 
+// Whether the run passes (exit 0): no failure, and something was checked
+// (a run whose every case the implementation skipped is no pass).
+[[nodiscard]] bool run_passes(const DiffResult& result);
+
 [[nodiscard]] std::string report_json(const DiffOptions& options, const DiffResult& result);   // report_json.cpp
 [[nodiscard]] std::string report_junit(const DiffOptions& options, const DiffResult& result);  // report_junit.cpp
 

@@ -17,6 +17,33 @@ using Layout = JsonWriter::Layout;
 
 std::uint64_t ms(std::chrono::milliseconds t) { return static_cast<std::uint64_t>(t.count()); }
 
+void write_slow(JsonWriter& w, const DiffResult& result) {
+    w.begin_object();
+    w.key("count");
+    w.count(result.slow_count);
+    w.key("cases");
+    w.begin_array();
+    for (const SlowCase& c : result.slow) {
+        w.item();
+        w.begin_object();
+        w.key("number");
+        w.count(c.number);
+        w.key("family");
+        w.string(gen::family_name(c.family));
+        w.key("vertices");
+        w.count(c.vertices);
+        w.key("edges");
+        w.count(c.edges);
+        w.key("ms");
+        w.count(ms(c.took));
+        w.key("limit_ms");
+        w.count(ms(c.limit));
+        w.end_object();
+    }
+    w.end_array();
+    w.end_object();
+}
+
 void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& result) {
     static constexpr const char* kStops[] = {"cases", "time", "first-failure", "max-failures"};
     w.key("format");
@@ -39,6 +66,24 @@ void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& resu
     w.count(result.first_case);
     w.key("skipped");
     w.count(result.skipped);
+    w.key("skipped_by_impl");
+    w.count(result.skipped_by_impl);
+    w.key("skip_reasons");
+    w.begin_array();
+    for (const auto& [reason, n] : result.skip_reasons) {
+        w.item();
+        w.begin_object();
+        w.key("reason");
+        w.string(reason);
+        w.key("cases");
+        w.count(n);
+        w.end_object();
+    }
+    w.end_array();
+    w.key("checked");
+    w.count(result.checked());
+    w.key("slow");
+    write_slow(w, result);
     w.key("large_cases");
     w.count(result.large_cases);
     w.key("stopped_by");
@@ -48,7 +93,7 @@ void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& resu
     w.key("reference_cpu_ms");
     w.count(ms(result.reference_cpu));
     w.key("agrees");
-    w.boolean(result.failures.empty());
+    w.boolean(run_passes(result));
 }
 
 void write_case(JsonWriter& w, const Case& c) {
@@ -91,6 +136,8 @@ void write_shrinking(JsonWriter& w, const Counterexample& c) {
     w.count(ms(c.shrink_elapsed));
     w.key("budget_spent");
     w.boolean(c.budget_spent);
+    w.key("minimal");
+    w.boolean(c.minimal);
     w.end_object();
 }
 
@@ -139,6 +186,13 @@ void write_failure(JsonWriter& w, const DiffOptions& options, const Failure& f) 
     w.string(failure_name(c.first.kind));
     w.key("signature");
     w.string(f.signature);
+    w.key("classes");
+    w.begin_array();
+    for (const gen::CoordinateClass k : f.classes) {
+        w.item();
+        w.string(gen::coordinate_class_name(k));
+    }
+    w.end_array();
     w.key("occurrences");
     w.count(f.occurrences);
     w.key("cases");

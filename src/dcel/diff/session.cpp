@@ -6,6 +6,7 @@
 #include <unordered_set>
 
 #include "dcel/build.hpp"
+#include "dcel/diff/speed.hpp"
 #include "dcel/error.hpp"
 #include "dcel/io/graph_json.hpp"
 
@@ -16,6 +17,8 @@ using std::chrono::milliseconds;
 
 // How many passing graphs a --stream failure may need before it.
 constexpr std::size_t kHistory = 8;
+// Skip reasons listed one by one; more share the last entry.
+constexpr std::size_t kMaxSkipReasons = 20;
 // A hang's candidates get this many times the slowest passing run, at least kMinShrinkTimeout.
 constexpr long kShrinkTimeoutFactor = 5;
 constexpr milliseconds kMinShrinkTimeout{250};
@@ -66,10 +69,19 @@ private:
         }
         result_.large_cases += c->spec.large ? 1 : 0;
         report_progress(i, *c);
+        const std::size_t size = c->graph.vertices.size() + c->graph.edges.size();
+        const milliseconds limit = speed_.limit(size, o_.limits.timeout);
         const Clock::time_point t = clock_.now();
-        Outcome outcome = judge(build(c->graph), impl_->run(c->text), o_.limits, judging_);
+        Outcome outcome = judge(build(c->graph), impl_->run(c->text, limit), limit_as(limit), judging_);
+        const milliseconds took = since(t);
+        if (outcome.skipped) {
+            count_skip(outcome.skip_reason);
+            return true;
+        }
         if (outcome.agrees) {
-            slowest_pass_ = std::max(slowest_pass_, since(t));
+            speed_.record(size, took);
+            slowest_pass_ = std::max(slowest_pass_, took);
+            if (took > o_.limits.timeout) note_slow(*c, took, limit);
             remember(std::move(*c));
             return true;
         }
@@ -79,7 +91,7 @@ private:
             throw ProcessError("cannot run --impl '" + o_.impl + "': /bin/sh " + describe_end(outcome.run, o_.limits) +
                                (why.empty() ? "" : ": " + printable(why, 300)));
         }
-        on_failure(std::move(*c), std::move(outcome));
+        on_failure(std::move(*c), std::move(outcome), limit);
         if (!o_.keep_going) {
             result_.stopped_by = StopReason::FirstFailure;
             return false;
@@ -89,6 +101,32 @@ private:
             return false;
         }
         return true;
+    }
+
+    [[nodiscard]] ProcessLimits limit_as(milliseconds limit) const {
+        ProcessLimits l = o_.limits;
+        l.timeout = limit;
+        return l;
+    }
+
+    void count_skip(const std::string& reason) {
+        ++result_.skipped_by_impl;
+        auto& reasons = result_.skip_reasons;
+        const auto it = std::find_if(reasons.begin(), reasons.end(), [&](const auto& r) { return r.first == reason; });
+        if (it != reasons.end()) {
+            ++it->second;
+        } else if (reasons.size() < kMaxSkipReasons) {
+            reasons.emplace_back(reason, 1);
+        } else {
+            ++reasons.back().second;  // "... and others" share the last entry
+        }
+    }
+
+    void note_slow(const Case& c, milliseconds took, milliseconds limit) {
+        ++result_.slow_count;
+        if (result_.slow.size() >= kMaxListedSlowCases) return;
+        result_.slow.push_back(
+            {c.spec.number, c.spec.params.family, c.graph.vertices.size(), c.graph.edges.size(), took, limit});
     }
 
     void report_progress(std::size_t i, const Case& c) {
@@ -109,11 +147,15 @@ private:
         if (history_.size() > kHistory) history_.pop_front();
     }
 
-    // A failure: counted against a failure already found when it fails the
-    // same way on the same coordinate class; otherwise confirmed, shrunk, and
-    // kept as a new one (or merged into one that shrank to the same graph).
-    void on_failure(Case c, Outcome outcome) {
-        const std::string key = failure_key(outcome) + "/" + std::string(gen::coordinate_class_name(c.coordinates));
+    // A failure: counted against the failure whose key it has (its class,
+    // its kinds of difference and its coordinate class: it is most likely
+    // the same bug); otherwise confirmed and shrunk, then joined to the
+    // failure whose counterexample has the same signature, or kept as a new
+    // one (session.hpp, Failure).
+    void on_failure(Case c, Outcome outcome, milliseconds limit) {
+        const gen::CoordinateClass coordinates = c.coordinates;
+        const std::string key = failure_class(outcome) + "|" + difference_kinds(outcome) + "|" +
+                                std::string(gen::coordinate_class_name(coordinates));
         for (Failure& f : result_.failures) {
             if (std::find(f.keys.begin(), f.keys.end(), key) != f.keys.end()) {
                 count(f, c.spec.number);
@@ -121,31 +163,34 @@ private:
             }
         }
         Failure f;
-        f.key = key;
         f.keys.push_back(key);
+        f.classes.push_back(coordinates);
         f.found_after = since(start_);
         count(f, c.spec.number);
-        f.example = investigate(std::move(c), std::move(outcome));
+        f.example = investigate(std::move(c), std::move(outcome), limit);
         impl_->restart();  // the search goes on in a fresh process
-        // The same bug found again from another coordinate class shrinks to
-        // the same kind of failure on a graph of the same size and class (the
-        // shrinker snaps coordinates to small integers where the failure
-        // allows: a failure that needs subnormals keeps them, and stays apart).
         f.signature = signature(f.example);
         for (Failure& other : result_.failures) {
-            if (other.signature == f.signature) {
-                other.keys.push_back(f.key);
-                count(other, f.cases.front());
-                return;
+            if (other.signature != f.signature) continue;
+            other.keys.push_back(key);
+            if (std::find(other.classes.begin(), other.classes.end(), coordinates) == other.classes.end()) {
+                other.classes.push_back(coordinates);
             }
+            count(other, f.cases.front());
+            return;
         }
         f.id = result_.failures.size() + 1;
         result_.failures.push_back(std::move(f));
     }
 
+    // What the failure is once shrunk: its class, its kinds of difference,
+    // and the size it shrank to. (Not its coordinates: the same bug seen
+    // in two coordinate classes shrinks to the same shape in each.) An
+    // unreproduced failure keeps its case's key: its graph is not shrunk.
     static std::string signature(const Counterexample& x) {
-        return failure_key(x.outcome) + "/" + std::string(gen::coordinate_class_name(gen::classify(x.graph))) + "/" +
-               std::to_string(x.graph.vertices.size()) + "v" + std::to_string(x.graph.edges.size()) + "e";
+        return failure_class(x.outcome) + "|" + difference_kinds(x.outcome) + "|" +
+               (x.reproduced ? std::to_string(x.graph.vertices.size()) + "v" + std::to_string(x.graph.edges.size()) + "e"
+                             : "case " + std::to_string(x.original.spec.number));
     }
 
     static void count(Failure& f, std::size_t case_number) {
@@ -153,8 +198,9 @@ private:
         if (f.cases.size() < kMaxListedCases) f.cases.push_back(case_number);
     }
 
-    Counterexample investigate(Case c, Outcome first) {
+    Counterexample investigate(Case c, Outcome first, milliseconds limit) {
         Counterexample x;
+        x.limit = limit;
         x.first = std::move(first);
         x.original = std::move(c);
         x.graph = x.original.graph;
@@ -170,12 +216,12 @@ private:
     // after the last 1, 2, 4 or 8 graphs that passed before it.
     void reproduce(Counterexample& x) {
         impl_->restart();
-        x.reproduced = fails_same(*impl_, {}, x.original.text, x.first).has_value();
+        x.reproduced = fails_same(*impl_, {}, x.original.text, x.first, x.limit).has_value();
         if (x.reproduced || !o_.stream) return;
         for (std::size_t k = 1; k <= history_.size() && !x.reproduced; k *= 2) {
             std::vector<std::string> prefix;
             for (std::size_t j = history_.size() - k; j < history_.size(); ++j) prefix.push_back(history_[j].text);
-            if (fails_same(*impl_, prefix, x.original.text, x.first)) {
+            if (fails_same(*impl_, prefix, x.original.text, x.first, x.limit)) {
                 x.reproduced = true;
                 x.prefix = std::move(prefix);
                 prefix_cases_.assign(history_.end() - static_cast<std::ptrdiff_t>(k), history_.end());
@@ -188,7 +234,7 @@ private:
     // every cycle through a vertex of degree 3 reverses them all).
     void recheck_hint(Counterexample& x) const {
         std::vector<std::string>& notes = x.outcome.report.notes;
-        std::erase_if(notes, [](const std::string& n) { return n.rfind("the answer agrees with", 0) == 0; });
+        std::erase_if(notes, [](const std::string& n) { return n.rfind("the answer agrees", 0) == 0; });
         if (x.first.kind != FailureKind::WrongAnswer) return;
         try {
             const check::Answer a = check::read_answer(x.first.run.out, x.first.answer_kind);
@@ -202,12 +248,16 @@ private:
     }
 
     // The outcome when the graph fails like `like` (run in a fresh process
-    // after `prefix` when there is one), or nothing.
+    // after `prefix` when there is one, under `limit`), or nothing.
     std::optional<Outcome> fails_same(Implementation& impl, const std::vector<std::string>& prefix,
-                                      const std::string& text, const Outcome& like) {
+                                      const std::string& text, const Outcome& like, milliseconds limit) {
         const PlanarGraph g = io::read_graph(text);
-        const ProcessResult r = prefix.empty() ? impl.run(text) : impl.run_after(prefix, text);
-        Outcome o = judge(build(g), r, o_.limits, judging_);
+        if (!prefix.empty()) {
+            impl.restart();
+            for (const std::string& p : prefix) (void)impl.run(p);
+        }
+        const ProcessResult r = impl.run(text, limit);
+        Outcome o = judge(build(g), r, limit_as(limit), judging_);
         if (!same_failure(o, like)) return std::nullopt;
         return o;
     }
@@ -226,9 +276,11 @@ private:
 
     void shrink(Counterexample& x) {
         const Clock::time_point begin = clock_.now();
-        Shrinking s{x, shrink_limits(x), nullptr, begin + o_.shrink_time, {}, {}};
+        Clock::time_point deadline = begin + o_.shrink_time;
+        if (o_.time && !o_.only_case) deadline = std::min(deadline, start_ + *o_.time);  // --time bounds the whole run
+        Shrinking s{x, shrink_limits(x), nullptr, deadline, {}, {}};
         s.impl = make_(s.limits);
-        shrink_graph(s);
+        x.minimal = shrink_graph(s);
         drop_prefix_graphs(s);
         shrink_prefix_graphs(s);
         if (x.shrink_timeout) confirm_hang(x, s.accepted);
@@ -238,7 +290,7 @@ private:
     // A hang costs a whole timeout per failing candidate: the candidates get
     // a few times what the slowest passing case needed.
     ProcessLimits shrink_limits(Counterexample& x) const {
-        ProcessLimits limits = o_.limits;
+        ProcessLimits limits = limit_as(x.limit);
         if (x.first.kind != FailureKind::Timeout) return limits;
         const milliseconds derived = std::max(kMinShrinkTimeout, milliseconds(slowest_pass_.count() * kShrinkTimeoutFactor));
         if (derived < limits.timeout) {
@@ -266,8 +318,11 @@ private:
                       std::to_string(s.x.graph.vertices.size()) + " vertices, " +
                       std::to_string(s.x.graph.edges.size()) + " edges, " + std::to_string(s.x.attempts) + " attempts");
         }
-        if (!prefix.empty()) s.impl->restart();
-        const ProcessResult r = prefix.empty() ? s.impl->run(text) : s.impl->run_after(prefix, text);
+        if (!prefix.empty()) {
+            s.impl->restart();
+            for (const std::string& p : prefix) (void)s.impl->run(p);
+        }
+        const ProcessResult r = s.impl->run(text, s.limits.timeout);
         Outcome o = judge(build(candidate), r, s.limits, judging_);
         if (!same_failure(o, s.x.first)) {
             s.passed.insert(h);
@@ -277,23 +332,25 @@ private:
         return o;
     }
 
-    // The failing graph, the prefix (if any) fixed.
-    void shrink_graph(Shrinking& s) {
+    // The failing graph, the prefix (if any) fixed; true when it ended
+    // because no single candidate of the result fails (1-minimal).
+    bool shrink_graph(Shrinking& s) {
         Counterexample& x = s.x;
-        (void)gen::shrink_greedily(
-            x.graph,
-            [&](const PlanarGraph& c) {
-                const std::string text = spell(c, x.original.spec);
-                std::optional<Outcome> o = attempt(s, c, x.prefix, text);
-                if (!o) return false;
-                x.graph = c;
-                x.text = text;
-                x.outcome = std::move(*o);
-                ++x.steps;
-                if (x.shrink_timeout) s.accepted.push_back(c);
-                return true;
-            },
-            [&] { return out_of_budget(s); });  // x.graph follows every candidate taken
+        return !gen::shrink_greedily(
+                    x.graph,
+                    [&](const PlanarGraph& c) {
+                        const std::string text = spell(c, x.original.spec);
+                        std::optional<Outcome> o = attempt(s, c, x.prefix, text);
+                        if (!o) return false;
+                        x.graph = c;  // x follows every candidate taken
+                        x.text = text;
+                        x.outcome = std::move(*o);
+                        ++x.steps;
+                        if (x.shrink_timeout) s.accepted.push_back(c);
+                        return true;
+                    },
+                    [&] { return out_of_budget(s); })
+                    .stopped;
     }
 
     // Each graph of the prefix left out where the failure allows.
@@ -342,7 +399,7 @@ private:
             const PlanarGraph g = std::move(accepted.back());
             accepted.pop_back();
             const std::string text = spell(g, x.original.spec);
-            if (std::optional<Outcome> o = fails_same(*impl_, x.prefix, text, x.first)) {
+            if (std::optional<Outcome> o = fails_same(*impl_, x.prefix, text, x.first, x.limit)) {
                 x.graph = g;
                 x.text = text;
                 x.outcome = std::move(*o);
@@ -362,6 +419,7 @@ private:
     AnswerJudging judging_;
     DiffResult result_;
     milliseconds slowest_pass_{0};
+    SpeedModel speed_;  // the implementation's speed on passing cases, for each case's time limit
     std::deque<Case> history_;        // --stream: the last graphs that passed, in order
     std::vector<Case> prefix_cases_;  // the cases behind a failure's prefix
 };

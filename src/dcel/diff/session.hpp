@@ -37,19 +37,29 @@ struct Counterexample {
     bool budget_spent = false;  // shrinking stopped by --shrink-time or the attempt cap
     std::chrono::milliseconds shrink_elapsed{};
     // A hang: candidates ran with this shorter timeout (derived from the
-    // passing cases' times), and the result was confirmed with --timeout-ms.
+    // passing cases' times), and the result was confirmed with the case's
+    // own limit.
     std::optional<std::chrono::milliseconds> shrink_timeout;
+    std::chrono::milliseconds limit{};  // the time limit of the original case (a hang's)
+    // Shrinking ended because no single candidate of the counterexample
+    // fails the same way: it is 1-minimal for what the shrinker tries.
+    bool minimal = false;
 };
 
-// One distinct bug: its first case shrunk, and every case that failed so.
+// One distinct bug: the first case of each kind that showed it, shrunk, and
+// every case that failed so. Failures are grouped by what they are once
+// shrunk (docs/checking.md, "Grouping"): a failing case is shrunk when its
+// key (its failure class, its kinds of difference and its coordinate class)
+// is new; then its counterexample's signature (the class, the kinds of
+// difference and the size it shrank to) joins it to a failure with the same
+// signature, or makes a new one. So one bug seen in two coordinate classes
+// is one failure that lists both.
 struct Failure {
-    std::size_t id = 0;             // 1, 2, ... in the order found
-    std::string key;                // failure_key of the first case, and its coordinate class
-    std::vector<std::string> keys;  // every such key counted as this failure
-    // After shrinking: the failure key, and the counterexample's coordinate
-    // class and size. A new failure with an existing signature is merged.
-    std::string signature;
-    std::vector<std::size_t> cases;  // the cases that failed this way (the first kMaxListedCases)
+    std::size_t id = 0;                           // 1, 2, ... in the order found
+    std::vector<std::string> keys;                // the case keys counted as this failure
+    std::vector<gen::CoordinateClass> classes;    // the coordinate classes it failed in, as seen
+    std::string signature;                        // of the counterexample, after shrinking
+    std::vector<std::size_t> cases;               // the cases that failed this way (the first kMaxListedCases)
     std::size_t occurrences = 0;
     std::chrono::milliseconds found_after{};  // from the start of the run
     Counterexample example;
@@ -59,19 +69,37 @@ inline constexpr std::size_t kMaxListedCases = 100;
 
 enum class StopReason : std::uint8_t { Cases, Time, FirstFailure, MaxFailures };
 
+// A case slower than --timeout-ms that finished within the limit scaled from
+// the implementation's speed (speed.hpp): a performance note, not a failure.
+struct SlowCase {
+    std::size_t number = 0;
+    gen::Family family = gen::Family::RandomSegments;
+    std::size_t vertices = 0, edges = 0;
+    std::chrono::milliseconds took{}, limit{};
+};
+inline constexpr std::size_t kMaxListedSlowCases = 20;
+
 struct DiffResult {
     std::size_t cases_run = 0;  // cases run, agreeing or not
     std::size_t first_case = 0;
     std::size_t skipped = 0;  // cases no graph of an allowed coordinate class was found for
+    // Cases the implementation answered with {"skip": reason}: never a
+    // failure, never a pass; counted by reason, in the order first seen.
+    std::size_t skipped_by_impl = 0;
+    std::vector<std::pair<std::string, std::size_t>> skip_reasons;
+    std::vector<SlowCase> slow;  // the first kMaxListedSlowCases
+    std::size_t slow_count = 0;
     StopReason stopped_by = StopReason::Cases;
     std::chrono::milliseconds elapsed{};
     std::size_t restarts = 0;  // --stream: starts of the command after the first
     std::vector<Failure> failures;
-    std::array<std::size_t, 4> agreed_as{};  // answers that agreed, by the kind they were read as
+    std::array<std::size_t, check::kAnswerKindCount> agreed_as{};  // answers that agreed, by the kind they were read as
     std::size_t large_cases = 0;             // large cases run
     // CPU time of dcel itself (generating, writing, building the reference,
     // judging), without the command's: what the reference side costs.
     std::chrono::milliseconds reference_cpu{};
+    // Cases compared with the reference: run, with a graph, and not skipped by the implementation.
+    [[nodiscard]] std::size_t checked() const { return cases_run - skipped - skipped_by_impl; }
 };
 
 // Called with a short status line while working.
