@@ -44,7 +44,7 @@ check)
     run "echo '[[0, 1, 2, 3], [4, 5, 6]]' | $D check $g - --answer dump"
     expect answer-kind-forced 1 'unreadable-answer: ANSWER <stdin>'
     run "$D check $g $g --answer shapes"
-    expect answer-kind-unknown 2 'answer: shapes not in \{auto,faces,dump,polygons,rings\}'
+    expect answer-kind-unknown 2 'answer: shapes not in \{auto,faces,dump,polygons,rings,even-odd\}'
     # The first cycle dropped: one missing cycle, the count first.
     run "$D faces $g | sed 's/\\[\\[[^]]*\\], /[/' | $D check $g -"
     expect missing-cycle 1 '^1 difference
