@@ -5,30 +5,17 @@
 
 #include "dcel/format.hpp"
 #include "dcel/io/json_reader.hpp"
+#include "dcel/io/limited_readers.hpp"
 
 namespace dcel::cli {
 namespace {
 
 using io::JsonReader;
+using io::detail::read_point;
 
-constexpr std::string_view kPoint = "a point [x, y]";
 constexpr std::string_view kOps[] = {"name",       "split_edge",  "add_edge",      "add_edge_to_point",
                                      "add_vertex", "remove_edge", "remove_vertex", "merge_edges",
                                      "locate",     "stab"};
-
-Point read_point(JsonReader& r) {
-    r.begin_array(kPoint);
-    if (!r.next_element()) r.fail_arity(kPoint, 0);
-    Point p;
-    p.x = r.read_double();
-    if (!r.next_element()) r.fail_arity(kPoint, 1);
-    p.y = r.read_double();
-    if (r.next_element()) {
-        r.skip_value();
-        r.fail_arity(kPoint, r.finish_array());
-    }
-    return p;
-}
 
 // {"name": [x, y], ...} at a value position; a name given twice is refused
 // like any duplicate key.

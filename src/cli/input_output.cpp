@@ -125,62 +125,55 @@ private:
     std::size_t bom_ = 0;  // BOM bytes seen at the start
 };
 
-}  // namespace
+[[noreturn]] void throw_cannot_read(const std::string& name, int err) {
+    throw UsageError("cannot read " + name + ": " + os_reason(err));
+}
 
-void set_max_input_bytes(std::uint64_t bytes) { max_input = bytes; }
-std::uint64_t max_input_bytes() { return max_input; }
-
-std::string read_input(const std::string& path) {
-    const std::string name = display_name(path);
+// The descriptor to read `path` from: stdin for "-", else the file opened.
+FileDescriptor open_input(const std::string& path, const std::string& name) {
+    if (path == "-") return FileDescriptor(0, false);
+    StatusLine::set("opening " + name);  // a FIFO waits here for its writer
     int raw = 0;
-    if (path != "-") {
-        StatusLine::set("opening " + name);  // a FIFO waits here for its writer
-        do {
-            raw = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
-        } while (raw < 0 && errno == EINTR);
-        if (raw < 0) throw UsageError("cannot open " + name + ": " + os_reason(errno));
+    do {
+        raw = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY);
+    } while (raw < 0 && errno == EINTR);
+    if (raw < 0) throw UsageError("cannot open " + name + ": " + os_reason(errno));
+    return FileDescriptor(raw, true);
+}
+
+// A regular file, straight into `text` at its size. Returns false when it
+// turned out shorter (it shrank while read): then `text` is all of it.
+bool read_whole_file(int fd, const std::string& name, std::size_t size, std::string& text, std::uint64_t& total) {
+    text.resize(size);
+    while (total < text.size()) {
+        const ssize_t n = read_some(fd, text.data() + total, text.size() - total);
+        if (n < 0) throw_cannot_read(name, errno);
+        if (n == 0) break;
+        total += static_cast<std::uint64_t>(n);
     }
-    FileDescriptor fd(raw, path != "-");
-    struct stat st {};
-    if (::fstat(fd.get(), &st) != 0) throw UsageError("cannot read " + name + ": " + os_reason(errno));
-    if (S_ISDIR(st.st_mode)) throw UsageError("cannot read " + name + ": " + os_reason(EISDIR));
-    const bool regular = S_ISREG(st.st_mode);
-    if (regular && static_cast<std::uint64_t>(st.st_size) > max_input) {
-        throw_too_large(name, static_cast<std::uint64_t>(st.st_size), true);
-    }
-    StatusLine::set("reading " + name);
-    std::string text;
-    std::uint64_t total = 0;
-    auto fail_read = [&](int err) { throw UsageError("cannot read " + name + ": " + os_reason(err)); };
-    // A regular file: straight into a string of its size.
-    if (regular && st.st_size > 0) {
-        text.resize(static_cast<std::size_t>(st.st_size));
-        while (total < text.size()) {
-            const ssize_t n = read_some(fd.get(), text.data() + total, text.size() - total);
-            if (n < 0) fail_read(errno);
-            if (n == 0) break;
-            total += static_cast<std::uint64_t>(n);
-        }
-        text.resize(static_cast<std::size_t>(total));
-        if (total < static_cast<std::uint64_t>(st.st_size)) return text;  // shrank while read
-    }
-    // Anything else (or a file that grew): chunks of growing size, joined
-    // at the end, so that the peak is twice the input, not the three times
-    // of a doubling string's reallocation.
+    text.resize(static_cast<std::size_t>(total));
+    return total == size;
+}
+
+// Anything else (or a file that grew): chunks of growing size, joined at
+// the end onto `text`, so that the peak is twice the input, not the three
+// times of a doubling string's reallocation.
+//
+// Whether the first byte after whitespace (and a BOM) can start a JSON
+// value is known as soon as it arrives: a stream that cannot be JSON
+// (/dev/zero, a binary) is cut there, and the parser reports that byte, as
+// it would at the end of the whole stream, without holding it all.
+void read_in_chunks(int fd, const std::string& name, std::string& text, std::uint64_t& total) {
     std::vector<std::unique_ptr<char[]>> chunks;
     std::vector<std::size_t> sizes;
     std::size_t chunk = std::size_t{64} << 10;
-    // Whether the first byte after whitespace (and a BOM) can start a JSON
-    // value is known as soon as it arrives: a stream that cannot be JSON
-    // (/dev/zero, a binary) is cut there, and the parser reports that byte,
-    // as it would at the end of the whole stream, without holding it all.
     JsonStart start;
     for (bool cut = false; !cut;) {
         auto buffer = std::make_unique<char[]>(chunk);  // NOLINT(cppcoreguidelines-avoid-c-arrays)
         std::size_t filled = 0;
         while (filled < chunk) {
-            const ssize_t n = read_some(fd.get(), buffer.get() + filled, chunk - filled);
-            if (n < 0) fail_read(errno);
+            const ssize_t n = read_some(fd, buffer.get() + filled, chunk - filled);
+            if (n < 0) throw_cannot_read(name, errno);
             if (n == 0) break;
             const std::string_view got(buffer.get() + filled, static_cast<std::size_t>(n));
             filled += static_cast<std::size_t>(n);
@@ -203,6 +196,30 @@ std::string read_input(const std::string& path) {
         text.append(chunks[i].get(), sizes[i]);
         chunks[i].reset();
     }
+}
+
+}  // namespace
+
+void set_max_input_bytes(std::uint64_t bytes) { max_input = bytes; }
+std::uint64_t max_input_bytes() { return max_input; }
+
+std::string read_input(const std::string& path) {
+    const std::string name = display_name(path);
+    const FileDescriptor fd = open_input(path, name);
+    struct stat st {};
+    if (::fstat(fd.get(), &st) != 0) throw_cannot_read(name, errno);
+    if (S_ISDIR(st.st_mode)) throw_cannot_read(name, EISDIR);
+    const bool regular = S_ISREG(st.st_mode);
+    if (regular && static_cast<std::uint64_t>(st.st_size) > max_input) {
+        throw_too_large(name, static_cast<std::uint64_t>(st.st_size), true);
+    }
+    StatusLine::set("reading " + name);
+    std::string text;
+    std::uint64_t total = 0;
+    if (regular && st.st_size > 0 && !read_whole_file(fd.get(), name, static_cast<std::size_t>(st.st_size), text, total)) {
+        return text;
+    }
+    read_in_chunks(fd.get(), name, text, total);
     return text;
 }
 

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -107,25 +108,17 @@ std::string usage_message(const CLI::App& app, const CLI::ParseError& e, int arg
     return (name.empty() ? "" : name + ": ") + text + " (dcel " + (name.empty() ? "" : name + " ") + "--help)";
 }
 
-}  // namespace
-
-// Setting up the parser can throw only std::bad_alloc, and terminating is right then.
-int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
-    guard_standard_descriptors();
-    CLI::App app{
-        "dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
-        "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",
-        "dcel"};
+// The program's options and commands; the command parsed sets `action`,
+// and --max-input-bytes `max_input`.
+void add_options_and_commands(CLI::App& app, Action& action, std::uint64_t& max_input) {
     app.set_version_flag("--version", std::string("dcel ") + DCEL_VERSION + " (commit " + DCEL_COMMIT + ")");
     app.require_subcommand(1);
     // Global options may also come after the command: `dcel faces --max-input-bytes 1G big.json`.
     app.fallthrough(true);
-    std::uint64_t max_input = kDefaultMaxInputBytes;
     app.add_option("--max-input-bytes", max_input,
                    "Refuse a file or stdin larger than this many bytes (K, M, G, T: powers of 1024; default 512M)")
         ->type_name("BYTES")
         ->transform(byte_size());
-    Action action;
     add_faces_command(app, action);
     add_build_command(app, action);
     add_locate_command(app, action);
@@ -135,19 +128,24 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
     add_gen_command(app, action);
     add_render_command(app, action);
     add_diff_command(app, action);
+}
 
-    // CLI11 answers "A subcommand is required" to a misspelt command; name it
-    // and list the commands instead.
-    if (argc > 1 && argv[1][0] != '-') {
-        const std::string_view word = argv[1];
-        bool known = false;
-        for (const CLI::App* sub : std::as_const(app).get_subcommands({})) known = known || sub->get_name() == word;
-        if (!known) {
-            print_error("unknown command " + dcel::quote_for_message(word) + "; the commands are " +
-                        command_list(std::as_const(app)) + " (dcel --help)");
-            return kExitUsage;
-        }
+// CLI11 answers "A subcommand is required" to a misspelt command; this
+// names it and lists the commands instead. False when argv[1] is one.
+bool refuse_unknown_command(const CLI::App& app, int argc, char** argv) {
+    if (argc <= 1 || argv[1][0] == '-') return false;
+    const std::string_view word = argv[1];
+    for (const CLI::App* sub : app.get_subcommands({})) {
+        if (sub->get_name() == word) return false;
     }
+    print_error("unknown command " + dcel::quote_for_message(word) + "; the commands are " + command_list(app) +
+                " (dcel --help)");
+    return true;
+}
+
+// Parses the command line: nothing when the command is to run, else the
+// exit code (after --help or --version, or a usage error).
+std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -163,10 +161,11 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         print_error(e.what());
         return kExitUsage;
     }
-    set_max_input_bytes(max_input);
-    if (const std::vector<CLI::App*> parsed = app.get_subcommands(); !parsed.empty()) {
-        StatusLine::start(parsed.front()->get_name());
-    }
+    return std::nullopt;
+}
+
+// Runs the command; every failure it reports becomes one line and its exit code.
+int run_command(const Action& action) {
     try {
         return finish(action());
     } catch (const dcel::InvalidInput& e) {
@@ -182,4 +181,25 @@ int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
         print_error("out of memory: the input is too large for this machine");
         return kExitInvalid;
     }
+}
+
+}  // namespace
+
+// Setting up the parser can throw only std::bad_alloc, and terminating is right then.
+int main(int argc, char** argv) {  // NOLINT(bugprone-exception-escape)
+    guard_standard_descriptors();
+    CLI::App app{
+        "dcel: exact reference DCEL (half-edge structure) for planar straight-line graphs.\n"
+        "Input graphs are JSON: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]}.",
+        "dcel"};
+    Action action;
+    std::uint64_t max_input = kDefaultMaxInputBytes;
+    add_options_and_commands(app, action, max_input);
+    if (refuse_unknown_command(std::as_const(app), argc, argv)) return kExitUsage;
+    if (const std::optional<int> code = parse_command_line(app, argc, argv)) return *code;
+    set_max_input_bytes(max_input);
+    if (const std::vector<CLI::App*> parsed = app.get_subcommands(); !parsed.empty()) {
+        StatusLine::start(parsed.front()->get_name());
+    }
+    return run_command(action);
 }

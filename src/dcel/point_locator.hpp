@@ -54,8 +54,20 @@ private:
         Index second = kNoIndex;  // X: right child; Y: child below
     };
 
+    // The trapezoids just above and just below a new segment, one of each
+    // per trapezoid it crosses (neighbours may share one).
+    struct Sides {
+        std::vector<Index> upper;
+        std::vector<Index> lower;
+    };
+
     [[nodiscard]] Point point(VertexId v) const { return points_[v.index()]; }
     void insert(Index s);
+    // The steps of insert: the trapezoids segment s crosses, left to right;
+    // the new ones above and below it; the DAG's leaves replaced.
+    [[nodiscard]] std::vector<Index> crossed_by(Index s) const;
+    [[nodiscard]] Sides cut_along(Index s, const std::vector<Index>& crossed);
+    void replace_leaves(Index s, const std::vector<Index>& crossed, const Sides& sides, Index left_part, Index right_part);
     // The trapezoid that segment s enters just after passing the vertex `after`.
     [[nodiscard]] Index find_along(Index s, VertexId after) const;
     // Is segment s above segment t just to the right of the point `after`,

@@ -10,19 +10,22 @@
 #include "dcel/build/lex_order.hpp"
 #include "dcel/build/rank_graph.hpp"
 #include "dcel/build/sweep.hpp"
+#include "dcel/core/union_find.hpp"
 #include "dcel/geometry/predicates.hpp"
 
 namespace dcel {
 
 // From the internals of the core (dcel::detail).
-using detail::RankGraph;
 using detail::assign_huge;
 using detail::check_elements;
 using detail::lex_order_checked;
+using detail::Linking;
 using detail::rank_graph_checked;
+using detail::RankGraph;
 using detail::reserve_huge;
 using detail::sweep;
 using detail::sweep_ranks;
+using detail::UnionFind;
 namespace {
 
 // Frees a vector's memory now (clear() keeps the capacity).
@@ -48,7 +51,7 @@ public:
     Dcel run() {
         check_elements(g_);                                            // O(V + E)
         rg_ = rank_graph_checked(g_, lex_order_checked(g_.vertices));  // O(V + E log d); sort O(V log V) worst
-        find_components();                                             // O((V + E) alpha)
+        find_components();                                             // O((V + E) log V) worst
         find_edges_below();                                            // sweep: O((V + E) log(V + E))
         link_slots();                                                  // O(E), O(E log d) worst
         find_cycles();                                                 // O(E)
@@ -63,39 +66,42 @@ public:
 private:
     [[nodiscard]] Index num_slots() const { return rg_.num_slots(); }
 
-    // Union-find on ranks, the larger root linked under the smaller, so each
-    // component's root is its leftmost vertex. Afterwards component_[r] is
-    // the component of rank r; components are numbered in sweep order of
+    // Union-find on ranks, the smaller root kept (Linking::SmallestRoot), so
+    // each component's root is its leftmost vertex. Afterwards component_[r]
+    // is the component of rank r; components are numbered in sweep order of
     // their leftmost vertex.
     void find_components() {
         const Index n = rg_.num_vertices();
-        assign_huge(component_, n);
-        for (Index r = 0; r < n; ++r) component_[r] = r;
-        auto root = [&](Index x) {
-            while (component_[x] != x) x = component_[x] = component_[component_[x]];  // path halving
-            return x;
-        };
+        std::vector<Index> parents;
+        reserve_huge(parents, n);
+        UnionFind<Linking::SmallestRoot> sets(n, std::move(parents));
         // cyclic_[root]: an edge inside the root's tree has closed a cycle
         // (kept up to date on roots only, then moved to component numbers).
         assign_huge(cyclic_, n, char{0});
         for (Index r = 0; r < n; ++r) {
             for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
                 if (rg_.target[s] > r) continue;  // each edge once, from its right end
-                const Index a = root(r);
-                const Index b = root(rg_.target[s]);
+                const Index a = sets.find(r);
+                const Index b = sets.find(rg_.target[s]);
                 if (a == b) {
                     cyclic_[a] = 1;
                 } else {
-                    component_[std::max(a, b)] = std::min(a, b);
-                    if (cyclic_[std::max(a, b)] != 0) cyclic_[std::min(a, b)] = 1;
+                    const Index root = sets.link(a, b);
+                    const Index absorbed = root == a ? b : a;
+                    if (cyclic_[absorbed] != 0) cyclic_[root] = 1;
                 }
             }
         }
-        // Parents are smaller than children, so one ascending pass makes
-        // every entry its root, and a second (in place) turns roots into
-        // component numbers.
-        for (Index r = 0; r < n; ++r) component_[r] = component_[component_[r]];
-        for (Index r = 0; r < n; ++r) {
+        sets.flatten();
+        component_ = std::move(sets).release();
+        number_components();
+    }
+
+    // component_[r] is the root of r's component (its leftmost vertex, so no
+    // later than r): one ascending pass, in place, turns roots into
+    // component numbers and moves cyclic_ from roots to numbers.
+    void number_components() {
+        for (Index r = 0; r < rg_.num_vertices(); ++r) {
             if (component_[r] == r) {
                 cyclic_[leftmost_.size()] = cyclic_[r];  // leftmost_.size() <= r: that entry is done with
                 cyclic_count_ += cyclic_[r];

@@ -90,6 +90,60 @@ void group_by_origin(const PlanarGraph& g, std::vector<Index> rank, RankGraph& r
     }
 }
 
+// The first pair of half-edges that leave a vertex in one direction, for
+// the smallest such vertex id, so that the error is the one
+// sort_rings_checked reports.
+struct SameDirection {
+    VertexId vertex;
+    HalfEdgeId a;
+    HalfEdgeId b;
+    void note(VertexId v, HalfEdgeId first, HalfEdgeId second) {
+        if (v >= vertex) return;  // a null vertex is larger than every id
+        vertex = v;
+        a = first;
+        b = second;
+    }
+};
+
+// A ring of two, sorted in place: no round trip through RingEntry.
+inline void sort_two_in_place(RankGraph& rg, Index r, SameDirection& same) {
+    const Index first = rg.offset[r];
+    const Index t0 = rg.target[first];
+    const Index t1 = rg.target[first + 1];
+    const HalfEdgeId h0 = rg.half_edge[first];
+    const HalfEdgeId h1 = rg.half_edge[first + 1];
+    const PairOrder order = order_pair(rg.point[r], rg.point[t0], h0, rg.point[t1], h1);
+    if (order.swap) {
+        rg.target[first] = t1;
+        rg.target[first + 1] = t0;
+        rg.half_edge[first] = h1;
+        rg.half_edge[first + 1] = h0;
+    }
+    if (order.same_direction) same.note(rg.vertex[r], h0, h1);  // throw_same_direction orders the pair itself
+}
+
+// A larger ring, sorted on a contiguous copy of its targets' points (`ring`,
+// reused from vertex to vertex) and written back.
+inline void sort_on_copy(RankGraph& rg, Index r, std::vector<RingEntry>& ring, SameDirection& same) {
+    const Index first = rg.offset[r];
+    const Index degree = rg.offset[r + 1] - first;
+    ring.resize(degree);
+    for (Index i = 0; i < degree; ++i) {
+        // Field by field: building a whole RingEntry on the stack and
+        // copying it stalls on store forwarding.
+        const Index t = rg.target[first + i];
+        ring[i].target = rg.point[t];
+        ring[i].half_edge = rg.half_edge[first + i];
+        ring[i].payload = t;
+    }
+    const std::size_t same_at = sort_ring(rg.point[r], ring);
+    for (Index i = 0; i < degree; ++i) {
+        rg.half_edge[first + i] = ring[i].half_edge;
+        rg.target[first + i] = ring[i].payload;
+    }
+    if (same_at < ring.size()) same.note(rg.vertex[r], ring[same_at].half_edge, ring[same_at + 1].half_edge);
+}
+
 }  // namespace
 
 RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
@@ -100,58 +154,17 @@ RankGraph rank_graph_checked(const PlanarGraph& g, LexOrder&& lex) {
 
     group_by_origin(g, std::move(lex.rank_of_vertex), rg);
 
-    // Sort each ring on a contiguous copy of its targets' points. The first
-    // same-direction pair is remembered for the smallest vertex id, so the
-    // error is the one sort_rings_checked reports.
     std::vector<RingEntry> ring;
-    VertexId bad_vertex;
-    HalfEdgeId bad_a;
-    HalfEdgeId bad_b;
+    SameDirection same;
     for (Index r = 0; r < n; ++r) {
-        const Index first = rg.offset[r];
-        const Index degree = rg.offset[r + 1] - first;
-        if (degree < 2) continue;
-        if (degree == 2) {  // in place: no round trip through RingEntry
-            const Index t0 = rg.target[first];
-            const Index t1 = rg.target[first + 1];
-            const HalfEdgeId h0 = rg.half_edge[first];
-            const HalfEdgeId h1 = rg.half_edge[first + 1];
-            const PairOrder order = order_pair(rg.point[r], rg.point[t0], h0, rg.point[t1], h1);
-            if (order.swap) {
-                rg.target[first] = t1;
-                rg.target[first + 1] = t0;
-                rg.half_edge[first] = h1;
-                rg.half_edge[first + 1] = h0;
-            }
-            if (order.same_direction && rg.vertex[r] < bad_vertex) {
-                bad_vertex = rg.vertex[r];
-                bad_a = h0;  // throw_same_direction orders the pair itself
-                bad_b = h1;
-            }
-            continue;
-        }
-        ring.resize(degree);
-        for (Index i = 0; i < degree; ++i) {
-            // Field by field: building a whole RingEntry on the stack and
-            // copying it stalls on store forwarding.
-            const Index t = rg.target[first + i];
-            ring[i].target = rg.point[t];
-            ring[i].half_edge = rg.half_edge[first + i];
-            ring[i].payload = t;
-        }
-        const Point centre = rg.point[r];
-        const std::size_t same = sort_ring(centre, ring);
-        for (Index i = 0; i < degree; ++i) {
-            rg.half_edge[first + i] = ring[i].half_edge;
-            rg.target[first + i] = ring[i].payload;
-        }
-        if (same < ring.size() && rg.vertex[r] < bad_vertex) {
-            bad_vertex = rg.vertex[r];
-            bad_a = ring[same].half_edge;
-            bad_b = ring[same + 1].half_edge;
+        const Index degree = rg.degree(r);
+        if (degree == 2) {
+            sort_two_in_place(rg, r, same);
+        } else if (degree > 2) {
+            sort_on_copy(rg, r, ring, same);
         }
     }
-    if (!bad_vertex.is_null()) throw_same_direction(g, bad_vertex, bad_a, bad_b);
+    if (!same.vertex.is_null()) throw_same_direction(g, same.vertex, same.a, same.b);
     return rg;
 }
 

@@ -126,96 +126,126 @@ std::size_t confirm(Point centre, std::span<const RingEntry> ring) {
     return same;
 }
 
+// The steps of sort_ring that run for every small ring are forced inline:
+// left to GCC, the sorting network's step stays a call, which costs more
+// than the network itself on rings of degree 3 to 6.
+//
+// Two entries: one exact comparison, no guess. Returns 0 when they leave
+// in one direction, else 2.
+[[gnu::always_inline]] inline std::size_t sort_two(Point centre, std::span<RingEntry> ring) {
+    const PairOrder order = order_pair(centre, ring[0].target, ring[0].half_edge, ring[1].target, ring[1].half_edge);
+    if (order.swap) std::swap(ring[0], ring[1]);
+    return order.same_direction ? 0 : 2;
+}
+
+// Puts ring[key[j] & 0xFFFFFFFF] at position j for every j, in place, cycle
+// by cycle of the permutation (a sorted copy of the ring would add 32 bytes
+// an entry to the build's peak memory).
+void apply_sorted_keys(std::span<RingEntry> ring, const std::vector<std::uint64_t>& key) {
+    const std::size_t n = ring.size();
+    std::vector<char> placed(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (placed[i] != 0) continue;
+        const RingEntry first = ring[i];
+        std::size_t j = i;
+        for (;;) {
+            placed[j] = 1;
+            const std::size_t from = key[j] & 0xFFFFFFFFU;
+            if (from == i) {
+                ring[j] = first;
+                break;
+            }
+            ring[j] = ring[from];
+            j = from;
+        }
+    }
+}
+
+// Large rings (a star's centre, more than 24 entries): std::sort on integer
+// keys (quadrant, 30 bits of the guess, position), then the exact
+// confirmation; std::sort with the exact order when the guess was wrong.
+std::size_t sort_large(Point centre, std::span<RingEntry> ring) {
+    const std::size_t n = ring.size();
+    std::vector<std::uint64_t> key(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto guess = static_cast<std::uint64_t>(approximate_angle(centre, ring[i]) * 0x1.fffffffp29);
+        key[i] = (std::uint64_t{ring[i].quadrant} << 62U) | (guess << 32U) | i;
+    }
+    std::sort(key.begin(), key.end());
+    apply_sorted_keys(ring, key);
+    const std::size_t same = confirm(centre, ring);
+    if (same != kWrongOrder) return same;
+    std::sort(ring.begin(), ring.end(), ExactLess{centre});
+    return first_same_direction(centre, ring);
+}
+
+// 3 to 8 entries in the guessed order: keys of quadrant (2 bits), the guess
+// in [0, 1] (56 bits) and position (5 bits) through the sorting network,
+// then the entries gathered in key order.
+[[gnu::always_inline]] inline void guess_order_up_to_8(Point centre, std::span<RingEntry> ring) {
+    const std::size_t n = ring.size();
+    std::uint64_t key[8];
+    for (std::size_t i = 0; i < 8; ++i) {
+        if (i >= n) {
+            key[i] = ~std::uint64_t{0};
+            continue;
+        }
+        const auto guess = static_cast<std::uint64_t>(approximate_angle(centre, ring[i]) * 0x1p55);
+        key[i] = (std::uint64_t{ring[i].quadrant} << 61U) | (guess << 5U) | i;
+    }
+    sort8(key, n);
+    // Raw storage: an array of RingEntry would be zeroed on every call.
+    static_assert(std::is_trivially_copyable_v<RingEntry>);
+    alignas(RingEntry) std::byte sorted[8 * sizeof(RingEntry)];
+    for (std::size_t i = 0; i < n; ++i) std::memcpy(sorted + i * sizeof(RingEntry), &ring[key[i] & 31U], sizeof(RingEntry));
+    std::memcpy(ring.data(), sorted, n * sizeof(RingEntry));
+}
+
+// 9 to 24 entries in the guessed order: insertion sort on (quadrant, guess,
+// half-edge), the guesses computed once and moved with their entries.
+[[gnu::always_inline]] inline void guess_order_up_to_24(Point centre, std::span<RingEntry> ring) {
+    const std::size_t n = ring.size();
+    double key[24];
+    for (std::size_t i = 0; i < n; ++i) key[i] = approximate_angle(centre, ring[i]);
+    for (std::size_t i = 1; i < n; ++i) {
+        const RingEntry e = ring[i];
+        const double k = key[i];
+        std::size_t j = i;
+        auto before = [&](std::size_t x) {  // e goes before ring[x]
+            if (e.quadrant != ring[x].quadrant) return e.quadrant < ring[x].quadrant;
+            return k < key[x] || (k == key[x] && e.half_edge < ring[x].half_edge);
+        };
+        for (; j > 0 && before(j - 1); --j) {
+            ring[j] = ring[j - 1];
+            key[j] = key[j - 1];
+        }
+        ring[j] = e;
+        key[j] = k;
+    }
+}
+
 }  // namespace
 
+// Small rings (3 to 24 entries): order by a floating-point guess at the
+// angle, then confirm each adjacent pair exactly. A sequence whose
+// neighbours are all in exact order is in exact order, so the guess is only
+// ever a shortcut; when a pair is out of order (directions closer than
+// rounding can tell), sort exactly. Ties in the guess keep the ring's order,
+// i.e. half-edge order for rings that come in that order.
 std::size_t sort_ring(Point centre, std::span<RingEntry> ring) {
     for (RingEntry& e : ring) e.quadrant = quadrant_of(centre, e.target);
-    const ExactLess exact{centre};
     const std::size_t n = ring.size();
     if (n < 2) return n;  // nothing to order (and an empty span's data() may be null)
-    if (n == 2) {
-        const PairOrder order = order_pair(centre, ring[0].target, ring[0].half_edge, ring[1].target, ring[1].half_edge);
-        if (order.swap) std::swap(ring[0], ring[1]);
-        return order.same_direction ? 0 : 2;
-    }
-    if (n > 24) {
-        // Large rings (a star's centre): std::sort on integer keys (quadrant,
-        // 30 bits of the guess, position), then the same exact confirmation.
-        std::vector<std::uint64_t> key(n);
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto guess = static_cast<std::uint64_t>(approximate_angle(centre, ring[i]) * 0x1.fffffffp29);
-            key[i] = (std::uint64_t{ring[i].quadrant} << 62U) | (guess << 32U) | i;
-        }
-        std::sort(key.begin(), key.end());
-        // Apply the permutation in place, cycle by cycle (a sorted copy of
-        // the ring would add 32 bytes an entry to the build's peak memory).
-        std::vector<char> placed(n, 0);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (placed[i] != 0) continue;
-            const RingEntry first = ring[i];
-            std::size_t j = i;
-            for (;;) {
-                placed[j] = 1;
-                const std::size_t from = key[j] & 0xFFFFFFFFU;
-                if (from == i) {
-                    ring[j] = first;
-                    break;
-                }
-                ring[j] = ring[from];
-                j = from;
-            }
-        }
-        const std::size_t same = confirm(centre, ring);
-        if (same != kWrongOrder) return same;
-        std::sort(ring.begin(), ring.end(), exact);
-        return first_same_direction(centre, ring);
-    }
-    // Small rings: order by a floating-point guess at the angle, then
-    // confirm each adjacent pair exactly. A sequence whose neighbours are
-    // all in exact order is in exact order, so the guess is only ever a
-    // shortcut; when a pair is out of order (directions closer than
-    // rounding can tell), sort exactly. Ties in the guess keep the ring's
-    // order, i.e. half-edge order for rings that come in that order.
+    if (n == 2) return sort_two(centre, ring);
+    if (n > 24) return sort_large(centre, ring);
     if (n <= 8) {
-        // Keys: quadrant (2 bits), the guess in [0, 1] (56 bits), position (5 bits).
-        std::uint64_t key[8];
-        for (std::size_t i = 0; i < 8; ++i) {
-            if (i >= n) {
-                key[i] = ~std::uint64_t{0};
-                continue;
-            }
-            const auto guess = static_cast<std::uint64_t>(approximate_angle(centre, ring[i]) * 0x1p55);
-            key[i] = (std::uint64_t{ring[i].quadrant} << 61U) | (guess << 5U) | i;
-        }
-        sort8(key, n);
-        // Raw storage: an array of RingEntry would be zeroed on every call.
-        static_assert(std::is_trivially_copyable_v<RingEntry>);
-        alignas(RingEntry) std::byte sorted[8 * sizeof(RingEntry)];
-        for (std::size_t i = 0; i < n; ++i)
-            std::memcpy(sorted + i * sizeof(RingEntry), &ring[key[i] & 31U], sizeof(RingEntry));
-        std::memcpy(ring.data(), sorted, n * sizeof(RingEntry));
+        guess_order_up_to_8(centre, ring);
     } else {
-        double key[24];
-        for (std::size_t i = 0; i < n; ++i) key[i] = approximate_angle(centre, ring[i]);
-        for (std::size_t i = 1; i < n; ++i) {
-            const RingEntry e = ring[i];
-            const double k = key[i];
-            std::size_t j = i;
-            auto before = [&](std::size_t x) {  // e goes before ring[x]
-                if (e.quadrant != ring[x].quadrant) return e.quadrant < ring[x].quadrant;
-                return k < key[x] || (k == key[x] && e.half_edge < ring[x].half_edge);
-            };
-            for (; j > 0 && before(j - 1); --j) {
-                ring[j] = ring[j - 1];
-                key[j] = key[j - 1];
-            }
-            ring[j] = e;
-            key[j] = k;
-        }
+        guess_order_up_to_24(centre, ring);
     }
     const std::size_t same = confirm(centre, ring);
     if (same != kWrongOrder) return same;
-    insertion_sort(ring, exact);
+    insertion_sort(ring, ExactLess{centre});
     return first_same_direction(centre, ring);
 }
 

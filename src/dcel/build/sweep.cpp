@@ -84,22 +84,52 @@ private:
         return rg_.small(r) ? s : rg_.slot_towards(rg_.target[s], r);
     }
 
+    // Where a vertex sits in the status: the active edges just below and just
+    // above it (kNone past either end).
+    struct Place {
+        Index below = StatusList::kNone;
+        Index above = StatusList::kNone;
+    };
+    // The edges a vertex put into the status: the lowest (kNone when none
+    // started there) and the top one, the highest of them or, when none
+    // started, the edge below the vertex.
+    struct Inserted {
+        Index lowest = StatusList::kNone;
+        Index top = StatusList::kNone;
+    };
+
+    // Every step is called once per vertex and inlined (members of a class
+    // in this file): splitting the event into named steps costs no call.
     void visit(Index r, std::span<const char> wanted, std::span<Index> below_out) {
         if (!in_status_.empty() && in_status_[r] == 0) {
             if (wanted[r] != 0) locate_only(r, below_out);
             return;
         }
         const Point p = rg_.point[r];
-        const Index ring_begin = rg_.offset[r];
-        const Index ring_end = rg_.offset[r + 1];
+        Place place;
+        const bool any_ending = remove_ending(r, place);
+        // `above` must be the first active edge not below p (what a search
+        // would find). The candidates are that exactly when `below` is below
+        // p and `above` is not; otherwise, and when nothing ended here, search.
+        if (!any_ending || (place.below != StatusList::kNone && !below_point(place.below, p)) ||
+            (place.above != StatusList::kNone && below_point(place.above, p))) {
+            locate(p, place.below, place.above);
+        }
+        if (check_ && place.above != StatusList::kNone && orient2d(left(place.above), right(place.above), p) == Sign::Zero) {
+            throw_vertex_on_edge(g_, rg_.vertex[r], EdgeId(spans_[place.above].edge));
+        }
+        if (wanted[r] != 0) below_out[r] = place.below == StatusList::kNone ? kNoIndex : spans_[place.below].start_slot;
+        const Inserted added = insert_starting(r, place.below);
+        hint_ = added.top != StatusList::kNone ? added.top : place.above;
+        if (check_) check_new_neighbours(place, added, any_ending);
+    }
 
-        // Edges ending here leave the status. In a consistent status they
-        // are adjacent: their neighbours below and above are the candidates
-        // for `below` and `above`.
-        Index below = StatusList::kNone;
-        Index above = StatusList::kNone;
+    // Edges ending at r leave the status. In a consistent status they are
+    // adjacent: their neighbours below and above, set in `place`, are the
+    // candidates for r's place. Returns whether any edge ended here.
+    bool remove_ending(Index r, Place& place) {
         bool any_ending = false;
-        for (Index s = ring_begin; s < ring_end; ++s) {
+        for (Index s = rg_.offset[r]; s < rg_.offset[r + 1]; ++s) {
             if (rg_.target[s] >= r) continue;
             const Index e = node_of_slot_[home_of_ending(r, s)];
             if (e == kNoIndex || !status_.contains(e)) continue;
@@ -111,61 +141,69 @@ private:
                 Index hi = e;
                 while (status_.prev(lo) != StatusList::kNone && spans_[status_.prev(lo)].right == r) lo = status_.prev(lo);
                 while (status_.next(hi) != StatusList::kNone && spans_[status_.next(hi)].right == r) hi = status_.next(hi);
-                below = status_.prev(lo);
-                above = status_.next(hi);
+                place.below = status_.prev(lo);
+                place.above = status_.next(hi);
                 any_ending = true;
             }
             status_.erase(e);
         }
-        // `above` must be the first active edge not below p (what a search
-        // would find). The candidates are that exactly when `below` is below
-        // p and `above` is not; otherwise, and when nothing ended here, search.
-        if (!any_ending || (below != StatusList::kNone && !below_point(below, p)) ||
-            (above != StatusList::kNone && below_point(above, p))) {
-            locate(p, below, above);
-        }
-        if (check_ && above != StatusList::kNone && orient2d(left(above), right(above), p) == Sign::Zero) {
-            throw_vertex_on_edge(g_, rg_.vertex[r], EdgeId(spans_[above].edge));
-        }
-        if (wanted[r] != 0) below_out[r] = below == StatusList::kNone ? kNoIndex : spans_[below].start_slot;
+        return any_ending;
+    }
 
-        // Edges starting here enter bottom to top: the ring lists directions
-        // counterclockwise from east, so those in the lower half-plane (the
-        // ring's second half) come first, then those in the upper one.
-        // Edges ending here point into (pi/2, 3pi/2] and starting ones into
-        // (-pi/2, pi/2], so the ending ones form one run of the ring, and
-        // the starting edges after it are exactly those in the lower half:
-        // the split is found from ranks alone when anything ends here.
+    // The slot of the lowest edge starting at r. The ring lists directions
+    // counterclockwise from east, so the starting edges in the lower
+    // half-plane (the ring's second half) are the lowest. Edges ending here
+    // point into (pi/2, 3pi/2] and starting ones into (-pi/2, pi/2], so the
+    // ending ones form one run of the ring, and the starting edges after it
+    // are exactly those in the lower half: the split is found from ranks
+    // alone when anything ends here.
+    [[nodiscard]] Index lowest_starting_slot(Index r) const {
+        const Index ring_begin = rg_.offset[r];
+        const Index ring_end = rg_.offset[r + 1];
         Index split = ring_end;
         for (Index s = ring_end; s > ring_begin; --s) {
             if (rg_.target[s - 1] < r) break;
             split = s - 1;
         }
         if (split == ring_begin) {  // nothing ends here
+            const Point p = rg_.point[r];
             while (split < ring_end && angular_half(p, rg_.point[rg_.target[split]]) == 0) ++split;
         }
-        Index lowest_new = StatusList::kNone;
-        Index last = below;
-        auto insert_starting = [&](Index s) {
+        return split;
+    }
+
+    // Edges starting at r enter the status bottom to top, just above `below`:
+    // from the lowest starting slot to the ring's end, then round from its
+    // beginning.
+    Inserted insert_starting(Index r, Index below) {
+        Inserted added{StatusList::kNone, below};
+        auto insert = [&](Index s) {
             if (rg_.target[s] < r) return;
             const Index edge = edge_of(rg_.half_edge[s]).index();
-            const Index e = status_.insert_above(last);
+            const Index e = status_.insert_above(added.top);
             node_of_slot_[home_of_starting(r, s)] = e;
             if (e >= spans_.size()) spans_.resize(e + std::size_t{1});
             spans_[e] = Span{r, rg_.target[s], s, edge};
-            if (lowest_new == StatusList::kNone) lowest_new = e;
-            last = e;
+            if (added.lowest == StatusList::kNone) added.lowest = e;
+            added.top = e;
         };
-        for (Index s = split; s < ring_end; ++s) insert_starting(s);
-        for (Index s = ring_begin; s < split; ++s) insert_starting(s);
-        hint_ = last != StatusList::kNone ? last : above;
+        const Index split = lowest_starting_slot(r);
+        for (Index s = split; s < rg_.offset[r + 1]; ++s) insert(s);
+        for (Index s = rg_.offset[r]; s < split; ++s) insert(s);
+        return added;
+    }
 
-        if (!check_) return;
-        if (lowest_new == StatusList::kNone) {
-            if (any_ending && below != StatusList::kNone && above != StatusList::kNone) check_pair(below, above);
+    // The pairs of edges that became neighbours in the status at this
+    // vertex: the new edges' outer neighbours, or, when nothing started
+    // here, the two edges that the ending ones separated.
+    void check_new_neighbours(const Place& place, const Inserted& added, bool any_ending) const {
+        if (added.lowest == StatusList::kNone) {
+            if (any_ending && place.below != StatusList::kNone && place.above != StatusList::kNone) {
+                check_pair(place.below, place.above);
+            }
         } else {
-            if (below != StatusList::kNone) check_pair(below, lowest_new);
-            if (above != StatusList::kNone) check_pair(last, above);
+            if (place.below != StatusList::kNone) check_pair(place.below, added.lowest);
+            if (place.above != StatusList::kNone) check_pair(added.top, place.above);
         }
     }
 

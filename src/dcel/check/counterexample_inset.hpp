@@ -23,6 +23,9 @@ struct Inset {
 
 inline constexpr double kInsetWidth = 330;
 
+// "v12": a vertex as the drawing names it.
+inline std::string vertex_name(Index v) { return "v" + std::to_string(v); }
+
 // Paints the inset with its top left corner at `at` (kInsetWidth wide) and
 // returns its height. The fan's directions follow the panel drawing `g`;
 // labels that find no room are appended to left_out.

@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <set>
-#include <unordered_map>
 
 #include "dcel/check/counterexample_inset.hpp"
 #include "dcel/check/wrong_turns.hpp"
@@ -34,8 +32,6 @@ constexpr double kFont = 11;
 constexpr double kLine = 15;
 constexpr std::size_t kMaxInsets = 6;
 constexpr const char* kExtraInk = "#b35806";  // an answer cycle the reference does not have, or a repeat: brown
-
-std::string vertex_name(Index v) { return "v" + std::to_string(v); }
 
 // A vertex cycle rotated to start at its smallest rotation, so that equal
 // cycles compare equal whatever vertex they were listed from.
@@ -108,29 +104,9 @@ Panel make_panel(const Dcel& d, io::svg::FrameKind kind, Xy top_left) {
     return p;
 }
 
-std::unordered_map<std::uint64_t, HalfEdgeId> half_edges_by_ends(const Dcel& d) {
-    std::unordered_map<std::uint64_t, HalfEdgeId> out;
-    for (Index h = 0; h < d.num_half_edges(); ++h) {
-        out.emplace((std::uint64_t{d.origin(HalfEdgeId(h)).index()} << 32) | d.target(HalfEdgeId(h)).index(), HalfEdgeId(h));
-    }
-    return out;
-}
-
-// The answer's step u->v as drawn: along the edge when it is one, else a
-// straight dashed line; nothing for ids out of range.
-std::optional<std::pair<Polyline, bool>> step_line(const DrawnDcel& g,
-                                                   const std::unordered_map<std::uint64_t, HalfEdgeId>& by_ends, Index u,
-                                                   Index v) {
-    const Dcel& d = g.dcel();
-    if (u >= d.num_vertices() || v >= d.num_vertices()) return std::nullopt;
-    const auto it = by_ends.find((std::uint64_t{u} << 32) | v);
-    if (it != by_ends.end()) return std::pair{g.line(it->second), true};
-    return std::pair{Polyline{g.at(VertexId(u)), g.at(VertexId(v))}, false};
-}
-
 void paint_answer_cycles(std::string& out, const DrawnDcel& g, const CounterexampleDrawing& in, const ReferenceCycles& ref,
                          const std::vector<Inset>& insets) {
-    const auto by_ends = half_edges_by_ends(g.dcel());
+    const io::svg::StepLines steps(g);
     out += "<g id=\"answer-cycles\">\n";
     // A cycle the answer lists twice is drawn brown the second time: in its
     // face's colour it would lie exactly on the first copy and not be seen.
@@ -141,18 +117,19 @@ void paint_answer_cycles(std::string& out, const DrawnDcel& g, const Counterexam
         const auto match = repeat ? ref.face_of.end() : ref.face_of.find(key);
         const std::string ink = match != ref.face_of.end() ? io::svg::face_ink(match->second) : kExtraInk;
         for (std::size_t i = 0; i < cycle.size(); ++i) {
-            const auto line = step_line(g, by_ends, cycle[i], cycle[(i + 1) % cycle.size()]);
-            if (!line) continue;
-            io::svg::arrow(out, line->first,
-                           {ink, 1.3, 4.5, line->second ? "" : "5 3",
+            const auto step = steps(cycle[i], cycle[(i + 1) % cycle.size()]);
+            if (!step) continue;
+            io::svg::arrow(out, step->line,
+                           {ink, 1.3, 4.5, step->along_edge ? "" : "5 3",
                             match != ref.face_of.end() ? "answer-step" : "answer-step extra"});
         }
     }
     // The wrong turns on top: the answer's step out of the vertex, thick red.
     for (const Inset& inset : insets) {
         for (const WrongTurn& t : inset.turns) {
-            if (const auto line = step_line(g, by_ends, t.at, t.answer_to)) {
-                io::svg::arrow(out, line->first, {io::svg::kAnswerInk, 2.8, 4.5, line->second ? "" : "5 3", "wrong-turn"});
+            if (const auto step = steps(t.at, t.answer_to)) {
+                io::svg::arrow(out, step->line,
+                               {io::svg::kAnswerInk, 2.8, 4.5, step->along_edge ? "" : "5 3", "wrong-turn"});
             }
         }
     }
@@ -161,7 +138,7 @@ void paint_answer_cycles(std::string& out, const DrawnDcel& g, const Counterexam
 
 void paint_answer_polygons(std::string& out, const DrawnDcel& g, const CounterexampleDrawing& in,
                            const ReferenceCycles& ref) {
-    const auto by_ends = half_edges_by_ends(g.dcel());
+    const io::svg::StepLines steps(g);
     out += "<g id=\"answer-regions\" fill-rule=\"evenodd\">\n";
     // A polygon the answer lists twice (its rings the same up to order,
     // rotation and direction) is salmon the second time, as cycles are brown.
@@ -185,11 +162,11 @@ void paint_answer_polygons(std::string& out, const DrawnDcel& g, const Counterex
             if (!face && match != ref.face_of_ring.end()) face = match->second;
             Polyline drawn;
             for (std::size_t i = 0; i < ring.size(); ++i) {
-                const auto line = step_line(g, by_ends, ring[i], ring[(i + 1) % ring.size()]);
-                if (!line) continue;
-                drawn.insert(drawn.end(), line->first.begin(), line->first.end() - 1);
-                outline += "<path d=\"" + io::svg::path_data(line->first) + "\" stroke=\"#202020\" fill=\"none\"" +
-                           (line->second ? "" : " stroke-dasharray=\"5 3\"") + "/>";
+                const auto step = steps(ring[i], ring[(i + 1) % ring.size()]);
+                if (!step) continue;
+                drawn.insert(drawn.end(), step->line.begin(), step->line.end() - 1);
+                outline += "<path d=\"" + io::svg::path_data(step->line) + "\" stroke=\"#202020\" fill=\"none\"" +
+                           (step->along_edge ? "" : " stroke-dasharray=\"5 3\"") + "/>";
             }
             if (drawn.size() > 2) d += io::svg::path_data(drawn, true);
         }
@@ -229,50 +206,48 @@ std::string page(double width, double height, const std::string& title, const st
 
 std::string shortened(const std::string& s, std::size_t max) { return s.size() <= max ? s : s.substr(0, max - 3) + "..."; }
 
-}  // namespace
+// The page when there is no reference to draw: the title and why.
+std::string nothing_to_draw(const std::string& title) {
+    std::string body;
+    io::svg::text(body, {kPad, 24}, title, 14, io::svg::kNoteInk, "start", true);
+    io::svg::text(body, {kPad, 46}, "nothing to draw: no reference DCEL was given", kFont);
+    return page(std::max(420.0, io::svg::text_width(title, 14) + 2 * kPad), 60, title, body);
+}
 
-std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
-    const CounterexampleDrawing& in = drawing;
-    const std::string title = in.title.empty() ? "counterexample: " + in.answer_name + " against " + in.reference_name
-                                               : in.title;
-    if (in.reference == nullptr) {
-        std::string body;
-        io::svg::text(body, {kPad, 24}, title, 14, io::svg::kNoteInk, "start", true);
-        io::svg::text(body, {kPad, 46}, "nothing to draw: no reference DCEL was given", kFont);
-        return page(std::max(420.0, io::svg::text_width(title, 14) + 2 * kPad), 60, title, body);
-    }
-    const Dcel& d = *in.reference;
-    const ReferenceCycles ref = reference_cycles(d);
-    std::map<std::vector<Index>, std::size_t> answer_cycles;
-    for (const auto& c : in.answer_cycles) ++answer_cycles[canonical(c)];
-
-    // The insets: the first vertices with a wrong turn, in answer order.
-    std::vector<Inset> insets;
+// The vertices where the answer's next differs from the reference's: the
+// first kMaxInsets (in answer order) get an inset, the others are listed.
+struct Insets {
+    std::vector<Inset> drawn;
     std::vector<Index> uninset;
-    for (const WrongTurn& t : wrong_turns(d, in.answer_cycles)) {
-        auto it = std::find_if(insets.begin(), insets.end(), [&](const Inset& i) { return i.vertex == t.at; });
-        if (it != insets.end()) {
+};
+
+Insets collect_insets(const Dcel& d, const std::vector<std::vector<Index>>& answer_cycles) {
+    Insets out;
+    for (const WrongTurn& t : wrong_turns(d, answer_cycles)) {
+        auto it = std::find_if(out.drawn.begin(), out.drawn.end(), [&](const Inset& i) { return i.vertex == t.at; });
+        if (it != out.drawn.end()) {
             it->turns.push_back(t);
-        } else if (insets.size() < kMaxInsets) {
-            insets.push_back({t.at, static_cast<char>('A' + insets.size()), {t}});
-        } else if (std::find(uninset.begin(), uninset.end(), t.at) == uninset.end()) {
-            uninset.push_back(t.at);
+        } else if (out.drawn.size() < kMaxInsets) {
+            out.drawn.push_back({t.at, static_cast<char>('A' + out.drawn.size()), {t}});
+        } else if (std::find(out.uninset.begin(), out.uninset.end(), t.at) == out.uninset.end()) {
+            out.uninset.push_back(t.at);
         }
     }
+    return out;
+}
 
-    const io::svg::FrameKind kind = io::svg::choose_frame(d.points(), kLongest);
-    const double top = 58;  // title and subtitle
-    Panel left = make_panel(d, kind, {kPad, top + 18});
-    Panel right = make_panel(d, kind, {left.area.right() + kGap, top + 18});
+std::string subtitle_of(const CounterexampleDrawing& in, std::size_t insets) {
+    return "left: " + in.reference_name + "; right: " + shortened(in.answer_name, 60) +
+           (insets == 0   ? ""
+            : insets == 1 ? "; A: where their next differ (inset below)"
+                          : "; A, B, ...: where their next differ (insets below)");
+}
 
-    std::string body;
+// The title, the subtitle, each panel's name and frame.
+void paint_headers(std::string& body, const CounterexampleDrawing& in, const std::string& title, const std::string& subtitle,
+                   double top, const Panel& left, const Panel& right) {
     io::svg::text(body, {kPad, 22}, title, 14, io::svg::kNoteInk, "start", true);
-    const std::string subtitle = "left: " + in.reference_name + "; right: " + shortened(in.answer_name, 60) +
-                                 (insets.empty()       ? ""
-                                  : insets.size() == 1 ? "; A: where their next differ (inset below)"
-                                                       : "; A, B, ...: where their next differ (insets below)");
     io::svg::text(body, {kPad, 42}, subtitle, kFont);
-    // Panel headers.
     io::svg::text(body, {left.area.x, top + 12}, in.reference_name, 12, io::svg::kReferenceInk, "start", true);
     io::svg::text(body, {right.area.x, top + 12}, shortened(in.answer_name, 60), 12, io::svg::kAnswerInk, "start", true);
     for (const Panel* p : {&left, &right}) {
@@ -280,8 +255,15 @@ std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
                 "\" width=\"" + io::svg::num(p->area.w) + "\" height=\"" + io::svg::num(p->area.h) +
                 "\" fill=\"none\" stroke=\"#d0d0d0\"/>\n";
     }
+}
 
-    // The reference.
+// Left: the reference, its half-edges dashed where the answer lacks their
+// cycle. Right: the answer's regions and cycles over the reference's edges.
+// Both: a ring around each vertex with an inset.
+void paint_panels(std::string& body, const CounterexampleDrawing& in, const ReferenceCycles& ref, const Panel& left,
+                  const Panel& right, const std::vector<Inset>& insets) {
+    std::map<std::vector<Index>, std::size_t> answer_cycles;
+    for (const auto& c : in.answer_cycles) ++answer_cycles[canonical(c)];
     body += "<g id=\"reference\">\n";
     io::svg::paint_faces(body, *left.drawn);
     io::svg::paint_edges(body, *left.drawn);
@@ -301,9 +283,12 @@ std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
         ring_vertex(body, right.drawn->at(VertexId(inset.vertex)), io::svg::kAnswerInk);
     }
     body += "</g>\n";
+}
 
-    // Labels: the tags first, then the vertex ids, then the face ids.
-    LabelLayout labels;
+// The panels' labels, the tags first, then the vertex ids, then the face
+// ids; returns those that found no room.
+std::vector<std::string> label_panels(LabelLayout& labels, const Panel& left, const Panel& right,
+                                      const std::vector<Inset>& insets) {
     io::svg::block_drawing(labels, *left.drawn);
     io::svg::block_drawing(labels, *right.drawn);
     std::vector<std::string> left_out;
@@ -321,27 +306,37 @@ std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
     }
     const auto f = io::svg::label_faces(labels, *left.drawn, left.area);
     left_out.insert(left_out.end(), f.begin(), f.end());
+    return left_out;
+}
 
-    // The insets, in rows under the panels, at least three to a row.
-    double y = std::max(left.area.bottom(), right.area.bottom()) + 16;
-    const double width_panels = right.area.right() + kPad;
-    const double width_insets = kPad + static_cast<double>(std::min<std::size_t>(3, insets.size())) * (kInsetWidth + 12);
-    const auto per_row = std::max<std::size_t>(
-        1, static_cast<std::size_t>((std::max(width_panels, width_insets) - kPad) / (kInsetWidth + 12)));
+// The width of a row of (at most three) insets.
+double insets_width(std::size_t insets) {
+    return kPad + static_cast<double>(std::min<std::size_t>(3, insets)) * (kInsetWidth + 12);
+}
+
+// The insets in rows from y down, as many to a row as the page is wide
+// (at least three); returns the y under the last row.
+double paint_inset_rows(std::string& body, LabelLayout& labels, const std::vector<Inset>& insets, const Panel& right,
+                        const std::vector<std::vector<Index>>& answer_cycles, double y, double page_width,
+                        std::vector<std::string>& left_out) {
+    const auto per_row = std::max<std::size_t>(1, static_cast<std::size_t>((page_width - kPad) / (kInsetWidth + 12)));
     double row_height = 0;
     for (std::size_t i = 0; i < insets.size(); ++i) {
         const Xy at{kPad + static_cast<double>(i % per_row) * (kInsetWidth + 12), y};
-        const double h = paint_inset(body, labels, insets[i], *right.drawn, in.answer_cycles, at, left_out);
+        const double h = paint_inset(body, labels, insets[i], *right.drawn, answer_cycles, at, left_out);
         row_height = std::max(row_height, h);
         if (i % per_row == per_row - 1 || i + 1 == insets.size()) {
             y += row_height + 12;
             row_height = 0;
         }
     }
-    labels.emit(body);
+    return y;
+}
 
-    // The legend and notes.
-    std::vector<std::pair<std::string, const char*>> caption;
+using Caption = std::vector<std::pair<std::string, const char*>>;  // lines and their colours
+
+// What the two panels show, in the reference's and the answer's colours.
+void explain_panels(Caption& caption, const CounterexampleDrawing& in, bool any_inset) {
     caption.emplace_back("left, " + in.reference_name + ": each bounded face tinted, id inside (f0: the unbounded face);",
                          io::svg::kReferenceInk);
     caption.emplace_back("  its half-edges as arrows on their face's side" +
@@ -353,24 +348,29 @@ std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
         caption.emplace_back("  reference face with the same cycle, brown when the reference has no such cycle",
                              io::svg::kAnswerInk);
         caption.emplace_back("  or the answer repeats it;", io::svg::kAnswerInk);
-        caption.emplace_back(
-            insets.empty() ? "  its next agrees with the reference's at every step it takes"
-                           : "  thick red: its next where it differs from the reference's (the step out of the vertex)",
-            io::svg::kAnswerInk);
+        caption.emplace_back(any_inset
+                                 ? "  thick red: its next where it differs from the reference's (the step out of the vertex)"
+                                 : "  its next agrees with the reference's at every step it takes",
+                             io::svg::kAnswerInk);
     }
     if (!in.answer_polygons.empty()) {
         caption.emplace_back("right: the answer's regions, tinted like the reference face they match; salmon: no match,",
                              io::svg::kAnswerInk);
         caption.emplace_back("  or a repeat of a region drawn already", io::svg::kAnswerInk);
     }
-    if (!insets.empty()) {
+    if (any_inset) {
         caption.emplace_back("insets: the vertex's edges as a fan in their exact clockwise order (angles not to scale);",
                              io::svg::kNoteInk);
         caption.emplace_back("  black: the edge arrived along; blue: the reference's next; red: the answer's",
                              io::svg::kNoteInk);
     }
+}
+
+// The notes: wrong turns without an inset (every one of them, over as many
+// lines as it takes), bent edges, the frame's notes, labels left out.
+void add_notes(Caption& caption, const std::vector<Index>& uninset, const Panel& left,
+               const std::vector<std::string>& left_out) {
     if (!uninset.empty()) {
-        // Every one of them, over as many lines as it takes.
         std::string line = "wrong turns also at";
         for (std::size_t i = 0; i < uninset.size(); ++i) {
             const std::string item = " " + vertex_name(uninset[i]) + (i + 1 < uninset.size() ? "," : " (no inset)");
@@ -393,8 +393,12 @@ std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
         for (std::size_t i = 0; i < left_out.size() && i < 12; ++i) list += (i > 0 ? ", " : "") + left_out[i];
         caption.emplace_back("no room for the labels of " + list + (left_out.size() > 12 ? ", ..." : ""), io::svg::kNoteInk);
     }
-    double width = std::max({width_panels, width_insets, io::svg::text_width(subtitle, kFont) + 2 * kPad,
-                             io::svg::text_width(title, 14) + 2 * kPad});
+}
+
+// The caption from y down, then the coordinate table (small graphs) or a
+// note on where the coordinates are; widens `width` to fit. Returns the y
+// under it.
+double paint_caption(std::string& body, const Caption& caption, const Dcel& d, double y, double& width) {
     for (const auto& [line, colour] : caption) {
         io::svg::text(body, {kPad, y + kLine - 4}, line, kFont, colour);
         width = std::max(width, io::svg::text_width(line, kFont) + 2 * kPad);
@@ -408,6 +412,46 @@ std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
         io::svg::text(body, {kPad, y + kLine - 4}, "true coordinates: hover over a vertex", kFont);
         y += kLine;
     }
+    return y;
+}
+
+}  // namespace
+
+// Two panels side by side (the reference, the answer), the insets in rows
+// under them, then the caption.
+std::string render_counterexample_svg(const CounterexampleDrawing& drawing) {
+    const CounterexampleDrawing& in = drawing;
+    const std::string title = in.title.empty() ? "counterexample: " + in.answer_name + " against " + in.reference_name
+                                               : in.title;
+    if (in.reference == nullptr) return nothing_to_draw(title);
+    const Dcel& d = *in.reference;
+    const ReferenceCycles ref = reference_cycles(d);
+    const Insets insets = collect_insets(d, in.answer_cycles);
+
+    const io::svg::FrameKind kind = io::svg::choose_frame(d.points(), kLongest);
+    const double top = 58;  // title and subtitle
+    Panel left = make_panel(d, kind, {kPad, top + 18});
+    Panel right = make_panel(d, kind, {left.area.right() + kGap, top + 18});
+
+    std::string body;
+    const std::string subtitle = subtitle_of(in, insets.drawn.size());
+    paint_headers(body, in, title, subtitle, top, left, right);
+    paint_panels(body, in, ref, left, right, insets.drawn);
+    LabelLayout labels;
+    std::vector<std::string> left_out = label_panels(labels, left, right, insets.drawn);
+    const double width_panels = right.area.right() + kPad;
+    const double width_insets = insets_width(insets.drawn.size());
+    double y = paint_inset_rows(body, labels, insets.drawn, right, in.answer_cycles,
+                                std::max(left.area.bottom(), right.area.bottom()) + 16, std::max(width_panels, width_insets),
+                                left_out);
+    labels.emit(body);
+
+    Caption caption;
+    explain_panels(caption, in, !insets.drawn.empty());
+    add_notes(caption, insets.uninset, left, left_out);
+    double width = std::max({width_panels, width_insets, io::svg::text_width(subtitle, kFont) + 2 * kPad,
+                             io::svg::text_width(title, 14) + 2 * kPad});
+    y = paint_caption(body, caption, d, y, width);
     return page(width, y + 10, title, body);
 }
 

@@ -371,21 +371,22 @@ AnswerKeys answer_keys(std::string_view text) {
     return k;
 }
 
-Detected detect(std::string_view text) {
-    JsonReader r(text);
-    const JsonType top = r.peek();
-    if (top == JsonType::Object) {
-        const AnswerKeys k = answer_keys(text);
-        if (k.dump) return {AnswerKind::Dump, "an object with a \"half_edges\" key"};
-        if (k.faces) return {AnswerKind::Faces, "an object with a \"faces\" key"};
-        if (k.polygons) return {AnswerKind::Polygons, "an object with a \"polygons\" key"};
-        if (k.rings) return {AnswerKind::Rings, "an object with a \"rings\" key"};
-        if (k.type) return {AnswerKind::Polygons, "a GeoJSON object"};
-        throw InvalidInput(InputErrorKind::Shape,
-                           "top level: an object answer needs a \"faces\", \"half_edges\", \"polygons\" or \"rings\" "
-                           "key, or a GeoJSON \"type\"");
-    }
-    if (top != JsonType::Array) r.fail_type("an answer: an object or an array");
+// An object answer: by its one answer key.
+Detected detect_object(std::string_view text) {
+    const AnswerKeys k = answer_keys(text);
+    if (k.dump) return {AnswerKind::Dump, "an object with a \"half_edges\" key"};
+    if (k.faces) return {AnswerKind::Faces, "an object with a \"faces\" key"};
+    if (k.polygons) return {AnswerKind::Polygons, "an object with a \"polygons\" key"};
+    if (k.rings) return {AnswerKind::Rings, "an object with a \"rings\" key"};
+    if (k.type) return {AnswerKind::Polygons, "a GeoJSON object"};
+    throw InvalidInput(InputErrorKind::Shape,
+                       "top level: an object answer needs a \"faces\", \"half_edges\", \"polygons\" or \"rings\" "
+                       "key, or a GeoJSON \"type\"");
+}
+
+// An array answer (r at it): by the depth of its first number, and, at
+// depth 3, the length of the innermost array that holds it.
+Detected detect_array(JsonReader& r) {
     std::size_t depth = 0;        // arrays entered before the first number
     std::size_t last_length = 0;  // elements of the innermost array that holds it
     for (;;) {
@@ -429,6 +430,14 @@ Detected detect(std::string_view text) {
                                                           " arrays deep fit no answer kind; pass --answer "
                                                           "faces|dump|polygons|rings");
     }
+}
+
+Detected detect(std::string_view text) {
+    JsonReader r(text);
+    const JsonType top = r.peek();
+    if (top == JsonType::Object) return detect_object(text);
+    if (top != JsonType::Array) r.fail_type("an answer: an object or an array");
+    return detect_array(r);
 }
 
 }  // namespace

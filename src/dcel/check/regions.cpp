@@ -326,6 +326,9 @@ private:
         for (HalfEdgeId& h : m.walk) h = twin(h);
     }
 
+    // Polygon (or ring) p, summed to `chain`, against the reference's faces:
+    // a face it is, a face with part of its boundary missing, or a
+    // difference.
     void match(std::size_t p, const Chain& chain, const std::vector<Index>& shell, std::vector<char>& explained,
                std::vector<Index>& polygon_of_face) {
         const std::string what = named_rings_ ? "ring " + std::to_string(p) : "polygon " + std::to_string(p);
@@ -343,8 +346,9 @@ private:
         if (const std::string twice = repeated_text(chain); !twice.empty()) {
             if (out_.wants(DifferenceKind::ExtraPolygon)) {
                 out_.add(DifferenceKind::ExtraPolygon,
-                         shown + " walks " + twice + " more than once (a ring listed twice, or rings that overlap); "
-                                 "a face's boundary walks each half-edge once",
+                         shown + " walks " + twice +
+                             " more than once (a ring listed twice, or rings that overlap); "
+                             "a face's boundary walks each half-edge once",
                          shell);
             }
             return;
@@ -360,32 +364,13 @@ private:
                 }
                 return;
             }
-            if (polygon_of_face[f] == kNoIndex) {
-                polygon_of_face[f] = static_cast<Index>(p);
-                explained[f] = 1;
-            } else if (out_.wants(DifferenceKind::ExtraPolygon)) {
-                out_.add(DifferenceKind::ExtraPolygon,
-                         shown + " repeats " + (named_rings_ ? "ring " : "polygon ") + std::to_string(polygon_of_face[f]) +
-                             ": the reference has " + face_text(ref_, FaceId(f)) + " once",
-                         shell);
-            }
+            match_face(p, f, shown, shell, explained, polygon_of_face);
             return;
         }
         // Not a face. When every half-edge lies on one face's chain, the
         // answer has that face with part of its boundary missing.
-        FaceId only;
-        bool one_face = true;
-        for (const Index h : chain) {
-            const FaceId f = d_.face(HalfEdgeId(h));
-            const bool on_chain = f != Dcel::kUnboundedFace &&
-                                  std::binary_search(chains_[f.index()].begin(), chains_[f.index()].end(), h);
-            if (!on_chain || (!only.is_null() && f != only)) {
-                one_face = false;
-                break;
-            }
-            only = f;
-        }
-        if (one_face && !rings_ && (!even_odd_ || odd_[only.index()] != 0)) {
+        const FaceId only = face_holding(chain);
+        if (!only.is_null() && !rings_ && (!even_odd_ || odd_[only.index()] != 0)) {
             explained[only.index()] = 1;
             if (out_.wants(DifferenceKind::WrongHole)) {
                 out_.add(DifferenceKind::WrongHole,
@@ -400,6 +385,35 @@ private:
                          (rings_ ? " (a ring is the boundary of a bounded face with what it encloses filled in)" : ""),
                      shell);
         }
+    }
+
+    // Polygon p is face f: the first polygon to be it explains it, a later
+    // one is a repeat.
+    void match_face(std::size_t p, Index f, const std::string& shown, const std::vector<Index>& shell,
+                    std::vector<char>& explained, std::vector<Index>& polygon_of_face) {
+        if (polygon_of_face[f] == kNoIndex) {
+            polygon_of_face[f] = static_cast<Index>(p);
+            explained[f] = 1;
+        } else if (out_.wants(DifferenceKind::ExtraPolygon)) {
+            out_.add(DifferenceKind::ExtraPolygon,
+                     shown + " repeats " + (named_rings_ ? "ring " : "polygon ") + std::to_string(polygon_of_face[f]) +
+                         ": the reference has " + face_text(ref_, FaceId(f)) + " once",
+                     shell);
+        }
+    }
+
+    // The bounded face whose chain holds every half-edge of `chain` (a
+    // non-empty chain of distinct half-edges), or null when there is none.
+    [[nodiscard]] FaceId face_holding(const Chain& chain) const {
+        FaceId only;
+        for (const Index h : chain) {
+            const FaceId f = d_.face(HalfEdgeId(h));
+            const bool on_chain = f != Dcel::kUnboundedFace &&
+                                  std::binary_search(chains_[f.index()].begin(), chains_[f.index()].end(), h);
+            if (!on_chain || (!only.is_null() && f != only)) return FaceId();
+            only = f;
+        }
+        return only;
     }
 
     // The half-edges a sorted chain holds more than once ("v5->v4, v4->v6"),

@@ -51,6 +51,12 @@ struct Step {
 
 [[nodiscard]] inline Point at(std::int64_t x, std::int64_t y) { return {static_cast<double>(x), static_cast<double>(y)}; }
 
+// Appends the point p to g; returns its id.
+inline VertexId add_vertex(PlanarGraph& g, Point p) {
+    g.vertices.push_back(p);
+    return VertexId(static_cast<Index>(g.vertices.size() - 1));
+}
+
 // floor(sqrt(n)), exactly.
 [[nodiscard]] std::int64_t isqrt(std::size_t n);
 

@@ -12,14 +12,6 @@
 #include "dcel/geometry/predicates.hpp"
 
 namespace dcel::gen::detail {
-namespace {
-
-VertexId add_vertex(PlanarGraph& g, Point p) {
-    g.vertices.push_back(p);
-    return VertexId(static_cast<Index>(g.vertices.size() - 1));
-}
-
-}  // namespace
 
 Step random_direction(Rng& rng) {
     static const Step kSteps[] = {{1, 0},  {0, 1},  {1, 1}, {1, -1}, {2, 1},  {1, 2},

@@ -2,8 +2,8 @@
 // (or one big simple polygon through all the points), subsets of a
 // triangulation, and random trees.
 #include <algorithm>
-#include <numeric>
 
+#include "dcel/core/union_find.hpp"
 #include "dcel/gen/families.hpp"
 #include "dcel/gen/graph_builder.hpp"
 
@@ -48,26 +48,6 @@ private:
     std::int64_t cell_, across_;
     std::vector<Index> start_;
     const std::vector<Point>* points_;
-};
-
-// Disjoint sets with path halving, for Kruskal.
-class Forest {
-public:
-    explicit Forest(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), Index{0}); }
-    Index root(Index v) {
-        while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-        return v;
-    }
-    bool join(Index a, Index b) {
-        a = root(a);
-        b = root(b);
-        if (a == b) return false;
-        parent_[a] = b;
-        return true;
-    }
-
-private:
-    std::vector<Index> parent_;
 };
 
 std::int64_t squared_length(const std::vector<Point>& p, const GraphEdge& e) {
@@ -137,10 +117,10 @@ PlanarGraph tree(Rng& rng, std::size_t n) {
         });
     }
     const bool forest = rng.chance(1, 3);
-    Forest sets(n);
+    dcel::detail::UnionFind sets(static_cast<Index>(n));  // Kruskal: an edge joining two trees is taken
     std::vector<GraphEdge> edges;
     for (const GraphEdge& e : candidates) {
-        if (!sets.join(e.u.index(), e.v.index())) continue;
+        if (!sets.unite(e.u.index(), e.v.index())) continue;
         if (!forest || !rng.chance(1, 16)) edges.push_back(e);
     }
     return with_edges(std::move(points), std::move(edges));

@@ -13,14 +13,6 @@
 #include "dcel/geometry/predicates.hpp"
 
 namespace dcel::gen::detail {
-namespace {
-
-VertexId add_vertex(PlanarGraph& g, Point p) {
-    g.vertices.push_back(p);
-    return VertexId(static_cast<Index>(g.vertices.size() - 1));
-}
-
-}  // namespace
 
 // Valid by design: an h-row grid of n / h full columns and one partial
 // column of n % h points (exactly n), spaced s apart. Edges are sides of the
@@ -215,6 +207,81 @@ PlanarGraph nested_polygons(Rng& rng, std::size_t n) {
     return g;
 }
 
+namespace {
+
+constexpr std::int64_t kCell = 8;  // the side of a cell of components()
+
+// A point strictly inside a cell, y drawn first. One draw per statement
+// (rng.hpp): at(draw(), draw()) would draw in the compiler's order.
+Point inner_point(Rng& rng) {
+    const std::int64_t y = rng.between(1, kCell - 1);
+    const std::int64_t x = rng.between(1, kCell - 1);
+    return at(x, y);
+}
+
+// The shape of the next cell: 0 a point, 1 a segment, 2 a triangle, 3 a
+// square with a point inside, 4 a path of three segments, 5 nothing; a
+// shape with more vertices than there is room for becomes a point.
+std::uint64_t cell_kind(Rng& rng, std::size_t room) {
+    const std::uint64_t kind = rng.below(6);
+    if ((kind == 2 && room < 3) || (kind == 3 && room < 5) || (kind == 4 && room < 4) || (kind == 1 && room < 2)) return 0;
+    return kind;
+}
+
+// Draws a shape of the given kind in b's cell. (A triangle whose corners
+// fall on one line is left out.)
+void draw_shape(GraphBuilder& b, Rng& rng, std::uint64_t kind) {
+    switch (kind) {
+        case 0: (void)b.add_point(inner_point(rng)); break;
+        case 1: {
+            const Point q = inner_point(rng);  // q first: the order gen.digests records
+            const Point p = inner_point(rng);
+            (void)b.add_segment(p, q);
+            break;
+        }
+        case 2: {
+            const Point p = inner_point(rng), q = inner_point(rng), s = inner_point(rng);
+            if (orient2d(p, q, s) == Sign::Zero) break;
+            (void)b.add_segment(p, q);
+            (void)b.add_segment(q, s);
+            (void)b.add_segment(s, p);
+            break;
+        }
+        case 3: {
+            const std::int64_t lo = 1, hi = kCell - 1;
+            (void)b.add_segment(at(lo, lo), at(hi, lo));
+            (void)b.add_segment(at(hi, lo), at(hi, hi));
+            (void)b.add_segment(at(hi, hi), at(lo, hi));
+            (void)b.add_segment(at(lo, hi), at(lo, lo));
+            // Strictly inside; one draw per statement (rng.hpp).
+            const std::int64_t y = rng.between(lo + 1, hi - 1);
+            const std::int64_t x = rng.between(lo + 1, hi - 1);
+            (void)b.add_point(at(x, y));
+            break;
+        }
+        case 4: {
+            Point from = inner_point(rng);
+            for (int k = 0; k < 3; ++k) {
+                const Point to = inner_point(rng);
+                (void)b.add_segment(from, to);
+                from = to;
+            }
+            break;
+        }
+        default: break;  // an empty cell
+    }
+}
+
+// Appends the graph `part` to g, moved by (dx, dy).
+void append_moved(PlanarGraph& g, const PlanarGraph& part, std::int64_t dx, std::int64_t dy) {
+    const auto base = static_cast<Index>(g.vertices.size());
+    for (const Point& p : part.vertices)
+        g.vertices.push_back({p.x + static_cast<double>(dx), p.y + static_cast<double>(dy)});
+    for (const GraphEdge& e : part.edges) g.edges.push_back({VertexId(base + e.u.index()), VertexId(base + e.v.index())});
+}
+
+}  // namespace
+
 // One small shape per cell of a coarse grid, each drawn through its own
 // GraphBuilder in the cell's open interior, so shapes of different cells
 // never meet and each check is O(1): many components, isolated vertices,
@@ -222,68 +289,11 @@ PlanarGraph nested_polygons(Rng& rng, std::size_t n) {
 // would overshoot becomes an isolated vertex. O(n).
 PlanarGraph components(Rng& rng, std::size_t n) {
     PlanarGraph g;
-    const std::int64_t cell = 8;
     const std::int64_t across = isqrt(n) + 1;
-    // A point strictly inside the cell, y drawn first. One draw per statement
-    // (rng.hpp): at(draw(), draw()) would draw in the compiler's order.
-    auto inner = [&] {
-        const std::int64_t y = rng.between(1, cell - 1);
-        const std::int64_t x = rng.between(1, cell - 1);
-        return at(x, y);
-    };
     for (std::int64_t c = 0; g.vertices.size() < n; ++c) {
-        const std::size_t room = n - g.vertices.size();
-        GraphBuilder b(cell);
-        std::uint64_t kind = rng.below(6);
-        if ((kind == 2 && room < 3) || (kind == 3 && room < 5) || (kind == 4 && room < 4) || (kind == 1 && room < 2)) {
-            kind = 0;
-        }
-        switch (kind) {
-            case 0: (void)b.add_point(inner()); break;
-            case 1: {
-                const Point q = inner();  // q first: the order gen.digests records
-                const Point p = inner();
-                (void)b.add_segment(p, q);
-                break;
-            }
-            case 2: {
-                const Point p = inner(), q = inner(), s = inner();
-                if (orient2d(p, q, s) == Sign::Zero) break;
-                (void)b.add_segment(p, q);
-                (void)b.add_segment(q, s);
-                (void)b.add_segment(s, p);
-                break;
-            }
-            case 3: {
-                const std::int64_t lo = 1, hi = cell - 1;
-                (void)b.add_segment(at(lo, lo), at(hi, lo));
-                (void)b.add_segment(at(hi, lo), at(hi, hi));
-                (void)b.add_segment(at(hi, hi), at(lo, hi));
-                (void)b.add_segment(at(lo, hi), at(lo, lo));
-                // Strictly inside; one draw per statement (rng.hpp).
-                const std::int64_t y = rng.between(lo + 1, hi - 1);
-                const std::int64_t x = rng.between(lo + 1, hi - 1);
-                (void)b.add_point(at(x, y));
-                break;
-            }
-            case 4: {
-                Point from = inner();
-                for (int k = 0; k < 3; ++k) {
-                    const Point to = inner();
-                    (void)b.add_segment(from, to);
-                    from = to;
-                }
-                break;
-            }
-            default: break;  // an empty cell
-        }
-        const std::int64_t ox = (c % across) * cell, oy = (c / across) * cell;
-        const auto base = static_cast<Index>(g.vertices.size());
-        for (const Point& p : b.graph().vertices)
-            g.vertices.push_back({p.x + static_cast<double>(ox), p.y + static_cast<double>(oy)});
-        for (const GraphEdge& e : b.graph().edges) {
-            g.edges.push_back({VertexId(base + e.u.index()), VertexId(base + e.v.index())});
-        }
+        GraphBuilder b(kCell);
+        draw_shape(b, rng, cell_kind(rng, n - g.vertices.size()));
+        append_moved(g, b.graph(), (c % across) * kCell, (c / across) * kCell);
     }
     return g;
 }

@@ -102,6 +102,15 @@ public:
 
 private:
     [[nodiscard]] std::optional<PlanarGraph> step();
+    // One step of each stage (step() dispatches on stage_).
+    [[nodiscard]] std::optional<PlanarGraph> empty_step();
+    [[nodiscard]] std::optional<PlanarGraph> components_step();
+    [[nodiscard]] std::optional<PlanarGraph> edges_step();
+    [[nodiscard]] std::optional<PlanarGraph> vertices_step();
+    [[nodiscard]] std::optional<PlanarGraph> merge_degree2_step();
+    [[nodiscard]] std::optional<PlanarGraph> contract_step();
+    [[nodiscard]] std::optional<PlanarGraph> global_snaps_step();
+    [[nodiscard]] std::optional<PlanarGraph> moves_step();
     void next_stage(Stage s);
 
     PlanarGraph g_;
@@ -131,10 +140,10 @@ private:
 // a whole pass from the start takes nothing (no single candidate of the
 // current graph fails) or stop() says so (asked before each candidate).
 struct GreedyShrink {
-    PlanarGraph graph;         // the smallest failing graph taken (the input when none)
-    std::size_t tried = 0;     // candidates handed to still_fails
-    std::size_t taken = 0;     // of which still failed
-    bool stopped = false;      // stop() ended it before a pass took nothing
+    PlanarGraph graph;      // the smallest failing graph taken (the input when none)
+    std::size_t tried = 0;  // candidates handed to still_fails
+    std::size_t taken = 0;  // of which still failed
+    bool stopped = false;   // stop() ended it before a pass took nothing
 };
 [[nodiscard]] GreedyShrink shrink_greedily(PlanarGraph g, const std::function<bool(const PlanarGraph&)>& still_fails,
                                            const std::function<bool()>& stop);

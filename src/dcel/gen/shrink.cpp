@@ -29,9 +29,10 @@
 #include <climits>
 #include <cmath>
 #include <map>
-#include <numeric>
-#include <set>
+#include <tuple>
+#include <utility>
 
+#include "dcel/core/union_find.hpp"
 #include "dcel/gen/brute_force.hpp"
 #include "dcel/gen/generate.hpp"
 
@@ -221,6 +222,74 @@ std::vector<std::vector<std::size_t>> incidence(const PlanarGraph& g) {
 
 Index other_end(const GraphEdge& e, Index v) { return e.u.index() == v ? e.v.index() : e.u.index(); }
 
+// g without its isolated vertices, when it has more than one (one alone is
+// left to the vertex-by-vertex stage).
+std::optional<PlanarGraph> without_isolated_vertices(const PlanarGraph& g) {
+    std::vector<char> isolated(g.vertices.size(), 1);
+    for (const GraphEdge& ge : g.edges) isolated[ge.u.index()] = isolated[ge.v.index()] = 0;
+    if (std::count(isolated.begin(), isolated.end(), 1) > 1) return without_vertices(g, isolated);
+    return std::nullopt;
+}
+
+// g without the one vertex v (and its edges), with `extra` edges (old ids) added.
+PlanarGraph without_vertex(const PlanarGraph& g, Index v, const std::vector<GraphEdge>& extra = {}) {
+    std::vector<char> drop(g.vertices.size(), 0);
+    drop[v] = 1;
+    return without_vertices(g, drop, extra);
+}
+
+// The connected component of each vertex, numbered in order of each
+// component's first vertex, and how many there are.
+std::pair<std::vector<Index>, std::size_t> number_components(const PlanarGraph& g) {
+    const auto n = static_cast<Index>(g.vertices.size());
+    dcel::detail::UnionFind sets(n);
+    for (const GraphEdge& ge : g.edges) (void)sets.unite(ge.u.index(), ge.v.index());
+    std::map<Index, Index> number;  // root -> component
+    std::vector<Index> component_of(n);
+    for (Index v = 0; v < n; ++v) {
+        component_of[v] = number.emplace(sets.find(v), static_cast<Index>(number.size())).first->second;
+    }
+    return {std::move(component_of), number.size()};
+}
+
+// The global snaps, the exact maps first (the graph keeps its shape), then
+// the ones that move points relative to each other; nothing past the last.
+std::optional<PlanarGraph> global_snap(const PlanarGraph& g, std::size_t which) {
+    switch (which) {
+        case 0: return scaled_to_integers(g);
+        case 1: return scaled_down(g);
+        case 2: return moved_to_origin(g);
+        case 3: return ranks(g);
+        case 4: {
+            PlanarGraph c = g;
+            for (Point& p : c.vertices) p = {std::round(p.x), std::round(p.y)};
+            return c;
+        }
+        case 5: {
+            PlanarGraph c = g;
+            for (Point& p : c.vertices) p = {is_integer(p.x) ? halved(p.x) : p.x, is_integer(p.y) ? halved(p.y) : p.y};
+            return c;
+        }
+        default: return std::nullopt;
+    }
+}
+constexpr std::size_t kGlobalSnaps = 6;
+
+// Where the move `target` (0, 1 or 2) takes the point p: a fractional point
+// is rounded (target 0 only), an integer one has both coordinates halved,
+// or x, or y. Nothing when the target does not apply or would not move p.
+std::optional<Point> moved_point(Point p, std::size_t target) {
+    Point to = p;
+    if (!is_integer(p.x) || !is_integer(p.y)) {
+        if (target != 0) return std::nullopt;
+        to = {std::round(p.x), std::round(p.y)};
+    } else {
+        to = target == 0 ? Point{halved(p.x), halved(p.y)} : target == 1 ? Point{halved(p.x), p.y} : Point{p.x, halved(p.y)};
+    }
+    if (to == p) return std::nullopt;
+    return to;
+}
+
 }  // namespace
 
 ShrinkCandidates::ShrinkCandidates(PlanarGraph g) : ShrinkCandidates(std::move(g), Position{}) {}
@@ -239,11 +308,9 @@ ShrinkCandidates::ShrinkCandidates(PlanarGraph g, Position start)
 std::optional<PlanarGraph> ShrinkCandidates::next() {
     if (isolated_first_) {
         isolated_first_ = false;
-        std::vector<char> isolated(g_.vertices.size(), 1);
-        for (const GraphEdge& ge : g_.edges) isolated[ge.u.index()] = isolated[ge.v.index()] = 0;
-        if (std::count(isolated.begin(), isolated.end(), 1) > 1) {
+        if (std::optional<PlanarGraph> c = without_isolated_vertices(g_)) {
             last_ = {Stage::Isolated, 0};
-            return without_vertices(g_, isolated);
+            return c;
         }
     }
     for (;;) {
@@ -257,187 +324,158 @@ std::optional<PlanarGraph> ShrinkCandidates::next() {
     }
 }
 
+// One step of the current stage: a candidate, or nothing (this step had
+// none, or the stage ended and the next one begins with the next call).
 std::optional<PlanarGraph> ShrinkCandidates::step() {
-    const std::size_t n = g_.vertices.size();
-    const std::size_t e = g_.edges.size();
     switch (stage_) {
-        case Stage::Empty:
-            stage_ = Stage::Isolated;
-            if (n == 0) {
-                stage_ = Stage::Done;
-                return std::nullopt;
-            }
-            return PlanarGraph{};
-        case Stage::Components: {
-            // First each component alone (a failure inside one component
-            // shrinks to it at once), then each component dropped.
-            if (component_of_.empty() && n > 0) {
-                // Union-find over the edges: the components, numbered by first vertex.
-                std::vector<Index> parent(n);
-                std::iota(parent.begin(), parent.end(), Index{0});
-                auto find = [&](Index x) {
-                    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-                    return x;
-                };
-                for (const GraphEdge& ge : g_.edges) parent[find(ge.u.index())] = find(ge.v.index());
-                std::map<Index, Index> number;
-                component_of_.resize(n);
-                for (Index v = 0; v < n; ++v) {
-                    component_of_[v] = number.emplace(find(v), static_cast<Index>(number.size())).first->second;
-                }
-                components_ = number.size();
-            }
-            if (components_ < 2 || index_ >= 2 * components_) {
-                next_stage(Stage::Edges);
-                return std::nullopt;
-            }
-            const bool keep_only = index_ < components_;
-            const std::size_t k = index_ % components_;
-            ++index_;
-            std::vector<char> drop(n, 0);
-            for (Index v = 0; v < n; ++v) drop[v] = static_cast<char>((component_of_[v] == k) != keep_only);
-            return without_vertices(g_, drop);
-        }
-        case Stage::Edges: {
-            if (chunk_ == 0 || e == 0) {
-                next_stage(Stage::Vertices);
-                return std::nullopt;
-            }
-            if (index_ >= e) {
-                if (chunk_ == 1) {
-                    next_stage(Stage::Vertices);
-                    return std::nullopt;
-                }
-                chunk_ /= 2;
-                index_ = 0;
-            }
-            const std::size_t begin = index_;
-            index_ += chunk_;
-            return without_edges(g_, begin, std::min(e, begin + chunk_));
-        }
-        case Stage::Isolated: {
-            next_stage(Stage::Components);
-            std::vector<char> isolated(n, 1);
-            for (const GraphEdge& ge : g_.edges) isolated[ge.u.index()] = isolated[ge.v.index()] = 0;
-            if (std::count(isolated.begin(), isolated.end(), 1) > 1) return without_vertices(g_, isolated);
-            return std::nullopt;
-        }
-        case Stage::Vertices: {
-            if (index_ >= n) {
-                next_stage(Stage::MergeDegree2);
-                return std::nullopt;
-            }
-            std::vector<char> drop(n, 0);
-            drop[index_++] = 1;
-            return without_vertices(g_, drop);
-        }
-        case Stage::MergeDegree2: {
-            if (incident_.empty()) incident_ = incidence(g_);
-            if (index_ >= n) {
-                next_stage(Stage::Contract);
-                return std::nullopt;
-            }
-            const auto v = static_cast<Index>(index_++);
-            if (incident_[v].size() != 2) return std::nullopt;
-            const Index a = other_end(g_.edges[incident_[v][0]], v);
-            const Index b = other_end(g_.edges[incident_[v][1]], v);
-            std::vector<char> gone(e, 0);
-            gone[incident_[v][0]] = gone[incident_[v][1]] = 1;
-            if (!new_edge_fits(g_, a, b, gone, v)) return std::nullopt;
-            std::vector<char> drop(n, 0);
-            drop[v] = 1;
-            return without_vertices(g_, drop, {{VertexId(a), VertexId(b)}});
-        }
-        case Stage::Contract: {
-            if (incident_.empty()) incident_ = incidence(g_);
-            if (index_ >= e) {
-                next_stage(Stage::GlobalSnaps);
-                return std::nullopt;
-            }
-            // Edge u-v: v goes, its other edges go to u. Only a vertex of low
-            // degree: checking many new edges costs O(degree E).
-            constexpr std::size_t kMaxContractedDegree = 8;
-            const GraphEdge& ge = g_.edges[index_++];
-            const Index u = ge.u.index(), v = ge.v.index();
-            if (incident_[v].size() > kMaxContractedDegree) return std::nullopt;
-            std::vector<char> gone(e, 0);
-            for (const std::size_t k : incident_[v]) gone[k] = 1;
-            std::vector<GraphEdge> moved;
-            for (const std::size_t k : incident_[v]) {
-                const Index w = other_end(g_.edges[k], v);
-                if (w == u) continue;
-                if (!new_edge_fits(g_, u, w, gone, v)) return std::nullopt;
-                // The new edges share u; they must not overlap one another.
-                for (const GraphEdge& m : moved) {
-                    if (segments_conflict(g_.vertices[u], g_.vertices[w], g_.vertices[u], g_.vertices[m.v.index()])) {
-                        return std::nullopt;
-                    }
-                }
-                moved.push_back({VertexId(u), VertexId(w)});
-            }
-            std::vector<char> drop(n, 0);
-            drop[v] = 1;
-            return without_vertices(g_, drop, moved);
-        }
-        case Stage::GlobalSnaps: {
-            const std::size_t which = index_++;
-            std::optional<PlanarGraph> c;
-            switch (which) {
-                // The exact maps first (the graph keeps its shape), then the
-                // ones that move points relative to each other.
-                case 0: c = scaled_to_integers(g_); break;
-                case 1: c = scaled_down(g_); break;
-                case 2: c = moved_to_origin(g_); break;
-                case 3: c = ranks(g_); break;
-                case 4: {
-                    c = g_;
-                    for (Point& p : c->vertices) p = {std::round(p.x), std::round(p.y)};
-                    break;
-                }
-                case 5: {
-                    c = g_;
-                    for (Point& p : c->vertices) {
-                        p = {is_integer(p.x) ? halved(p.x) : p.x, is_integer(p.y) ? halved(p.y) : p.y};
-                    }
-                    break;
-                }
-                default: next_stage(Stage::Moves); return std::nullopt;
-            }
-            if (!c) return std::nullopt;
-            const std::size_t fractions = non_integers(*c);
-            const bool smaller = fractions < fractions_ || (fractions == fractions_ && magnitudes_shrank(g_, *c));
-            if (!smaller || find_problem(*c)) return std::nullopt;
-            return c;
-        }
-        case Stage::Moves: {
-            // Vertex index_ / 3, target index_ % 3: round a fractional point,
-            // or halve an integer one's coordinates (both, or one of them).
-            if (index_ >= 3 * n) {
-                stage_ = Stage::Done;
-                return std::nullopt;
-            }
-            const auto v = static_cast<Index>(index_ / 3);
-            const std::size_t t = index_++ % 3;
-            const Point p = g_.vertices[v];
-            Point target = p;
-            if (!is_integer(p.x) || !is_integer(p.y)) {
-                if (t != 0) return std::nullopt;
-                target = {std::round(p.x), std::round(p.y)};
-            } else {
-                target = t == 0   ? Point{halved(p.x), halved(p.y)}
-                         : t == 1 ? Point{halved(p.x), p.y}
-                                  : Point{p.x, halved(p.y)};
-            }
-            if (target == p) return std::nullopt;
-            PlanarGraph c = g_;
-            c.vertices[v] = target;
-            const bool smaller = non_integers(c) < fractions_ || magnitudes_shrank(g_, c);
-            if (!smaller || !move_is_valid(c, v)) return std::nullopt;
-            return c;
-        }
+        case Stage::Empty: return empty_step();
+        case Stage::Isolated: next_stage(Stage::Components); return without_isolated_vertices(g_);
+        case Stage::Components: return components_step();
+        case Stage::Edges: return edges_step();
+        case Stage::Vertices: return vertices_step();
+        case Stage::MergeDegree2: return merge_degree2_step();
+        case Stage::Contract: return contract_step();
+        case Stage::GlobalSnaps: return global_snaps_step();
+        case Stage::Moves: return moves_step();
         case Stage::Done: return std::nullopt;
     }
     return std::nullopt;
+}
+
+std::optional<PlanarGraph> ShrinkCandidates::empty_step() {
+    stage_ = Stage::Isolated;
+    if (g_.vertices.empty()) {
+        stage_ = Stage::Done;
+        return std::nullopt;
+    }
+    return PlanarGraph{};
+}
+
+// First each component alone (a failure inside one component shrinks to it
+// at once), then each component dropped.
+std::optional<PlanarGraph> ShrinkCandidates::components_step() {
+    const std::size_t n = g_.vertices.size();
+    if (component_of_.empty() && n > 0) std::tie(component_of_, components_) = number_components(g_);
+    if (components_ < 2 || index_ >= 2 * components_) {
+        next_stage(Stage::Edges);
+        return std::nullopt;
+    }
+    const bool keep_only = index_ < components_;
+    const std::size_t k = index_ % components_;
+    ++index_;
+    std::vector<char> drop(n, 0);
+    for (Index v = 0; v < n; ++v) drop[v] = static_cast<char>((component_of_[v] == k) != keep_only);
+    return without_vertices(g_, drop);
+}
+
+// Runs of chunk_ edges dropped in turn; then runs half as long, down to
+// single edges.
+std::optional<PlanarGraph> ShrinkCandidates::edges_step() {
+    const std::size_t e = g_.edges.size();
+    if (chunk_ == 0 || e == 0) {
+        next_stage(Stage::Vertices);
+        return std::nullopt;
+    }
+    if (index_ >= e) {
+        if (chunk_ == 1) {
+            next_stage(Stage::Vertices);
+            return std::nullopt;
+        }
+        chunk_ /= 2;
+        index_ = 0;
+    }
+    const std::size_t begin = index_;
+    index_ += chunk_;
+    return without_edges(g_, begin, std::min(e, begin + chunk_));
+}
+
+std::optional<PlanarGraph> ShrinkCandidates::vertices_step() {
+    if (index_ >= g_.vertices.size()) {
+        next_stage(Stage::MergeDegree2);
+        return std::nullopt;
+    }
+    return without_vertex(g_, static_cast<Index>(index_++));
+}
+
+// Vertex v of degree 2, a-v-b, becomes the edge a-b when that fits.
+std::optional<PlanarGraph> ShrinkCandidates::merge_degree2_step() {
+    if (incident_.empty()) incident_ = incidence(g_);
+    if (index_ >= g_.vertices.size()) {
+        next_stage(Stage::Contract);
+        return std::nullopt;
+    }
+    const auto v = static_cast<Index>(index_++);
+    if (incident_[v].size() != 2) return std::nullopt;
+    const Index a = other_end(g_.edges[incident_[v][0]], v);
+    const Index b = other_end(g_.edges[incident_[v][1]], v);
+    std::vector<char> gone(g_.edges.size(), 0);
+    gone[incident_[v][0]] = gone[incident_[v][1]] = 1;
+    if (!new_edge_fits(g_, a, b, gone, v)) return std::nullopt;
+    return without_vertex(g_, v, {{VertexId(a), VertexId(b)}});
+}
+
+// Edge u-v: v goes, its other edges go to u. Only a vertex of low degree:
+// checking many new edges costs O(degree E).
+std::optional<PlanarGraph> ShrinkCandidates::contract_step() {
+    if (incident_.empty()) incident_ = incidence(g_);
+    if (index_ >= g_.edges.size()) {
+        next_stage(Stage::GlobalSnaps);
+        return std::nullopt;
+    }
+    constexpr std::size_t kMaxContractedDegree = 8;
+    const GraphEdge& ge = g_.edges[index_++];
+    const Index u = ge.u.index(), v = ge.v.index();
+    if (incident_[v].size() > kMaxContractedDegree) return std::nullopt;
+    std::vector<char> gone(g_.edges.size(), 0);
+    for (const std::size_t k : incident_[v]) gone[k] = 1;
+    std::vector<GraphEdge> moved;
+    for (const std::size_t k : incident_[v]) {
+        const Index w = other_end(g_.edges[k], v);
+        if (w == u) continue;
+        if (!new_edge_fits(g_, u, w, gone, v)) return std::nullopt;
+        // The new edges share u; they must not overlap one another.
+        for (const GraphEdge& m : moved) {
+            if (segments_conflict(g_.vertices[u], g_.vertices[w], g_.vertices[u], g_.vertices[m.v.index()])) {
+                return std::nullopt;
+            }
+        }
+        moved.push_back({VertexId(u), VertexId(w)});
+    }
+    return without_vertex(g_, v, moved);
+}
+
+// A global snap is taken when it has fewer non-integer coordinates, or as
+// many and smaller magnitudes, and is still valid (brute force).
+std::optional<PlanarGraph> ShrinkCandidates::global_snaps_step() {
+    const std::size_t which = index_++;
+    if (which >= kGlobalSnaps) {
+        next_stage(Stage::Moves);
+        return std::nullopt;
+    }
+    std::optional<PlanarGraph> c = global_snap(g_, which);
+    if (!c) return std::nullopt;
+    const std::size_t fractions = non_integers(*c);
+    const bool smaller = fractions < fractions_ || (fractions == fractions_ && magnitudes_shrank(g_, *c));
+    if (!smaller || find_problem(*c)) return std::nullopt;
+    return c;
+}
+
+// Vertex index_ / 3 moved to target index_ % 3 (moved_point), when that is
+// smaller and valid.
+std::optional<PlanarGraph> ShrinkCandidates::moves_step() {
+    if (index_ >= 3 * g_.vertices.size()) {
+        stage_ = Stage::Done;
+        return std::nullopt;
+    }
+    const auto v = static_cast<Index>(index_ / 3);
+    const std::size_t t = index_++ % 3;
+    const std::optional<Point> target = moved_point(g_.vertices[v], t);
+    if (!target) return std::nullopt;
+    PlanarGraph c = g_;
+    c.vertices[v] = *target;
+    const bool smaller = non_integers(c) < fractions_ || magnitudes_shrank(g_, c);
+    if (!smaller || !move_is_valid(c, v)) return std::nullopt;
+    return c;
 }
 
 void ShrinkCandidates::next_stage(Stage s) {

@@ -11,23 +11,8 @@ namespace {
 constexpr std::string_view kObjectForm = R"({"vertices": [[x, y], ...], "edges": [[u, v], ...]})";
 constexpr std::string_view kGraphForms =
     R"(a graph: {"vertices": [[x, y], ...], "edges": [[u, v], ...]} or [[[x, y], ...], [[u, v], ...]])";
-constexpr std::string_view kPoint = "a point [x, y]";
 constexpr std::string_view kEdge = "an edge [u, v]";
 constexpr std::string_view kVertexIndex = "vertex index";
-
-Point read_point(JsonReader& r) {
-    r.begin_array(kPoint);
-    if (!r.next_element()) r.fail_arity(kPoint, 0);
-    Point p;
-    p.x = r.read_double();
-    if (!r.next_element()) r.fail_arity(kPoint, 1);
-    p.y = r.read_double();
-    if (r.next_element()) {
-        r.skip_value();
-        r.fail_arity(kPoint, r.finish_array());
-    }
-    return p;
-}
 
 GraphEdge read_edge(JsonReader& r) {
     r.begin_array(kEdge);

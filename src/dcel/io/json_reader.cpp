@@ -422,6 +422,8 @@ std::size_t JsonReader::scan_number() {
     return p;
 }
 
+// The hot loop runs over plain ASCII; everything else (escapes, control
+// characters, UTF-8 sequences, the end) is a step of its own.
 std::size_t JsonReader::scan_string(bool& escaped) {
     const std::size_t n = text_.size();
     std::size_t p = pos_ + 1;
@@ -439,65 +441,81 @@ std::size_t JsonReader::scan_string(bool& escaped) {
         if (c == '"') return p + 1;
         if (c == '\\') {
             escaped = true;
-            if (p + 1 >= n) fail_syntax(pos_, "unterminated string: the input ends inside an escape");
-            const char e = text_[p + 1];
-            if (e == '"' || e == '\\' || e == '/' || e == 'b' || e == 'f' || e == 'n' || e == 'r' || e == 't') {
-                p += 2;
-                continue;
-            }
-            if (e != 'u') {
-                const auto ec = static_cast<unsigned char>(e);
-                const std::string shown_escape = ec > 0x20 && ec < 0x7F && e != '\''
-                                                     ? "'\\" + std::string(1, e) + "'"
-                                                     : "'\\' followed by " + describe_char(text_, p + 1);
-                fail_syntax(p, "invalid escape " + shown_escape +
-                                   " in a string: the escapes are \\\" \\\\ \\/ \\b \\f \\n \\r \\t and \\uXXXX");
-            }
-            const auto is_hex4 = [&](std::size_t at) {
-                if (n - at < 4) return false;
-                for (std::size_t k = 0; k < 4; ++k) {
-                    if (hex_value(text_[at + k]) < 0) return false;
-                }
-                return true;
-            };
-            if (!is_hex4(p + 2)) fail_syntax(p, "invalid escape in a string: \\u must be followed by 4 hex digits");
-            const std::uint32_t cp = hex4(text_, p + 2);
-            const std::string esc = single_quoted(text_.substr(p, 6));
-            if (cp >= 0xDC00 && cp <= 0xDFFF) {
-                fail_syntax(p, "unpaired surrogate " + esc + " in a string: a low surrogate must follow a high one");
-            }
-            if (cp >= 0xD800 && cp <= 0xDBFF) {
-                const bool paired = n - p >= 12 && text_[p + 6] == '\\' && text_[p + 7] == 'u' && is_hex4(p + 8) &&
-                                    hex4(text_, p + 8) >= 0xDC00 && hex4(text_, p + 8) <= 0xDFFF;
-                if (!paired) {
-                    fail_syntax(p, "unpaired surrogate " + esc +
-                                       " in a string: a high surrogate must be followed by a \\uDC00-\\uDFFF escape");
-                }
-                p += 12;
-            } else {
-                p += 6;
-            }
-            continue;
+            p = scan_escape(p);
+        } else if (c < 0x20) {
+            fail_control_character(p);
+        } else {
+            p = scan_utf8(p);
         }
-        if (c < 0x20) {
-            std::string fix;
-            switch (c) {
-                case '\n': fix = "\\n"; break;
-                case '\r': fix = "\\r"; break;
-                case '\t': fix = "\\t"; break;
-                case '\b': fix = "\\b"; break;
-                case '\f': fix = "\\f"; break;
-                default: fix = "\\u00" + hex_byte(c); break;
-            }
-            fail_syntax(p, "control character " + code_point_name(c) + " in a string: escape it as " + fix +
-                               (c == '\n' ? " (or is a closing '\"' missing?)" : ""));
-        }
-        const std::size_t len = detail::utf8_sequence(text_, p);
-        if (len == 0) {
-            fail_syntax(p, "invalid UTF-8 in a string (byte 0x" + hex_byte(c) + "): the document must be UTF-8");
-        }
-        p += len;
     }
+}
+
+std::size_t JsonReader::scan_escape(std::size_t p) const {
+    const std::size_t n = text_.size();
+    if (p + 1 >= n) fail_syntax(pos_, "unterminated string: the input ends inside an escape");
+    const char e = text_[p + 1];
+    if (e == '"' || e == '\\' || e == '/' || e == 'b' || e == 'f' || e == 'n' || e == 'r' || e == 't') return p + 2;
+    if (e != 'u') {
+        const auto ec = static_cast<unsigned char>(e);
+        const std::string shown_escape = ec > 0x20 && ec < 0x7F && e != '\''
+                                             ? "'\\" + std::string(1, e) + "'"
+                                             : "'\\' followed by " + describe_char(text_, p + 1);
+        fail_syntax(p, "invalid escape " + shown_escape +
+                           " in a string: the escapes are \\\" \\\\ \\/ \\b \\f \\n \\r \\t and \\uXXXX");
+    }
+    return scan_unicode_escape(p);
+}
+
+// A 'u' escape of 4 hex digits, or a surrogate pair of two (a high
+// surrogate D800-DBFF must be followed by a low one, DC00-DFFF).
+std::size_t JsonReader::scan_unicode_escape(std::size_t p) const {
+    const std::size_t n = text_.size();
+    const auto is_hex4 = [&](std::size_t at) {
+        if (n - at < 4) return false;
+        for (std::size_t k = 0; k < 4; ++k) {
+            if (hex_value(text_[at + k]) < 0) return false;
+        }
+        return true;
+    };
+    if (!is_hex4(p + 2)) fail_syntax(p, "invalid escape in a string: \\u must be followed by 4 hex digits");
+    const std::uint32_t cp = hex4(text_, p + 2);
+    const std::string esc = single_quoted(text_.substr(p, 6));
+    if (cp >= 0xDC00 && cp <= 0xDFFF) {
+        fail_syntax(p, "unpaired surrogate " + esc + " in a string: a low surrogate must follow a high one");
+    }
+    if (cp < 0xD800 || cp > 0xDBFF) return p + 6;
+    const bool paired = n - p >= 12 && text_[p + 6] == '\\' && text_[p + 7] == 'u' && is_hex4(p + 8) &&
+                        hex4(text_, p + 8) >= 0xDC00 && hex4(text_, p + 8) <= 0xDFFF;
+    if (!paired) {
+        fail_syntax(
+            p, "unpaired surrogate " + esc + " in a string: a high surrogate must be followed by a \\uDC00-\\uDFFF escape");
+    }
+    return p + 12;
+}
+
+void JsonReader::fail_control_character(std::size_t p) const {
+    const auto c = static_cast<unsigned char>(text_[p]);
+    std::string fix;
+    switch (c) {
+        case '\n': fix = "\\n"; break;
+        case '\r': fix = "\\r"; break;
+        case '\t': fix = "\\t"; break;
+        case '\b': fix = "\\b"; break;
+        case '\f': fix = "\\f"; break;
+        default: fix = "\\u00" + hex_byte(c); break;
+    }
+    fail_syntax(p, "control character " + code_point_name(c) + " in a string: escape it as " + fix +
+                       (c == '\n' ? " (or is a closing '\"' missing?)" : ""));
+}
+
+// One UTF-8 sequence (a byte >= 0x80 starts it): its end, or an error.
+std::size_t JsonReader::scan_utf8(std::size_t p) const {
+    const std::size_t len = detail::utf8_sequence(text_, p);
+    if (len == 0) {
+        const auto c = static_cast<unsigned char>(text_[p]);
+        fail_syntax(p, "invalid UTF-8 in a string (byte 0x" + hex_byte(c) + "): the document must be UTF-8");
+    }
+    return p + len;
 }
 
 // ---------------------------------------------------------------- structure

@@ -202,6 +202,12 @@ private:
     // Validate the string at pos_ ('"'); return the end (after the closing
     // quote) and whether it has escapes.
     [[nodiscard]] std::size_t scan_string(bool& escaped);
+    // The steps of scan_string, each at offset p inside the string and
+    // returning the offset just past what it checked.
+    [[nodiscard]] std::size_t scan_escape(std::size_t p) const;          // at a backslash
+    [[nodiscard]] std::size_t scan_unicode_escape(std::size_t p) const;  // at the backslash of a 'u' escape
+    [[nodiscard]] std::size_t scan_utf8(std::size_t p) const;            // at a byte >= 0x80
+    [[noreturn]] void fail_control_character(std::size_t p) const;
     [[noreturn]] void fail_unexpected(std::size_t offset, std::string_view expected) const;
     [[noreturn]] void fail_bad_word(std::size_t offset) const;
     [[noreturn]] void fail_index(std::string_view noun, std::size_t begin, std::size_t end) const;

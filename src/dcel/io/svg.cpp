@@ -1,7 +1,6 @@
 #include "dcel/io/svg.hpp"
 
 #include <algorithm>
-#include <unordered_map>
 
 #include "dcel/io/svg_canvas.hpp"
 #include "dcel/io/svg_drawing.hpp"
@@ -31,36 +30,22 @@ svg::FrameKind frame_kind(const Dcel& d, SvgFrame f) {
 
 void draw_highlights(std::string& out, const svg::DrawnDcel& g, const std::vector<std::vector<Index>>& cycles) {
     if (cycles.empty()) return;
-    const Dcel& d = g.dcel();
-    std::unordered_map<std::uint64_t, HalfEdgeId> by_ends;
-    for (Index h = 0; h < d.num_half_edges(); ++h) {
-        by_ends[(std::uint64_t{d.origin(HalfEdgeId(h)).index()} << 32) | d.target(HalfEdgeId(h)).index()] = HalfEdgeId(h);
-    }
+    const svg::StepLines steps(g);
     out += "<g id=\"highlight\" opacity=\"0.9\">\n";
     for (const auto& cycle : cycles) {
         for (std::size_t i = 0; i < cycle.size(); ++i) {
-            const Index u = cycle[i], v = cycle[(i + 1) % cycle.size()];
-            if (u >= d.num_vertices() || v >= d.num_vertices()) continue;
-            const auto it = by_ends.find((std::uint64_t{u} << 32) | v);
-            const svg::Polyline line = it != by_ends.end() ? g.line(it->second)
-                                                           : svg::Polyline{g.at(VertexId(u)), g.at(VertexId(v))};
-            svg::arrow(out, line, {svg::kAnswerInk, 2.6, 9, it != by_ends.end() ? "" : "5 3", "highlight"});
+            const auto step = steps(cycle[i], cycle[(i + 1) % cycle.size()]);
+            if (!step) continue;
+            svg::arrow(out, step->line, {svg::kAnswerInk, 2.6, 9, step->along_edge ? "" : "5 3", "highlight"});
         }
     }
     out += "</g>\n";
 }
 
-}  // namespace
-
-std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
-    svg::Frame frame(dcel.points(), frame_kind(dcel, options.frame));
-    const Xy size = frame.size(kLongest);
-    const double top = options.title.empty() ? kPad : 36;
-    const Box panel{kPad, top, size.x + 2 * kMargin, size.y + 2 * kMargin};
-    frame.place({panel.x + kMargin, panel.y + kMargin, size.x, size.y});
-    const svg::DrawnDcel g(dcel, frame);
-
-    std::string body;
+// The drawing, then its labels (vertex ids, and face ids unless turned
+// off); returns the labels that found no room.
+std::vector<std::string> paint_drawing(std::string& body, const svg::DrawnDcel& g, const Box& panel,
+                                       const SvgOptions& options) {
     svg::paint_faces(body, g);
     svg::paint_edges(body, g);
     svg::paint_half_edges(body, g, svg::by_face_colour(g));
@@ -75,12 +60,14 @@ std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
         left_out.insert(left_out.end(), faces.begin(), faces.end());
     }
     labels.emit(body);
+    return left_out;
+}
 
-    // The coordinate table beside the drawing, for small graphs.
-    const bool table = dcel.num_vertices() > 0 && dcel.num_vertices() <= options.max_table_vertices;
-    Xy table_size{0, 0};
-    if (table) table_size = svg::coordinate_table(body, {panel.right() + 16, panel.y + 8}, dcel.points(), kFont);
-
+// The caption: the counts, what the marks mean, bent edges, the frame's
+// notes, where the coordinates are, and the labels left out.
+std::vector<std::string> caption_of(const svg::DrawnDcel& g, const svg::Frame& frame, const SvgOptions& options, bool table,
+                                    const std::vector<std::string>& left_out) {
+    const Dcel& dcel = g.dcel();
     std::vector<std::string> caption;
     caption.push_back(count(dcel.num_vertices(), "vertex", "vertices") + ", " + count(dcel.num_edges(), "edge", "edges") +
                       ", " + count(dcel.num_faces() - 1, "bounded face", "bounded faces") +
@@ -101,26 +88,53 @@ std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
         if (left_out.size() > 12) list += ", and " + std::to_string(left_out.size() - 12) + " more";
         caption.push_back("no room for the labels of " + list);
     }
+    return caption;
+}
 
-    double width = std::max(panel.right() + (table ? 16 + table_size.x : 0) + kPad, 420.0);
-    for (const std::string& line : caption) width = std::max(width, svg::text_width(line, kFont) + 2 * kPad);
-    const double caption_top = std::max(panel.bottom(), panel.y + 8 + table_size.y) + 10;
-    const double height = caption_top + static_cast<double>(caption.size()) * kLine + 8;
-
+// The whole document: the body (drawing and table), then the title and the
+// caption from caption_top down.
+std::string page(double width, double height, const std::string& title, const std::string& body,
+                 const std::vector<std::string>& caption, double caption_top) {
     std::string out;
     out.reserve(body.size() + 4096);
     out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + svg::num(width) + "\" height=\"" + svg::num(height) +
            "\" viewBox=\"0 0 " + svg::num(width) + " " + svg::num(height) + "\">\n";
-    out += "<title>" + svg::escape(options.title) + "</title>\n";
+    out += "<title>" + svg::escape(title) + "</title>\n";
     out += "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
     out += body;
     out += "<g id=\"caption\" font-family=\"" + std::string(svg::kMonoFont) + "\">\n";
-    if (!options.title.empty()) svg::text(out, {kPad, 22}, options.title, 14, svg::kNoteInk, "start", true);
+    if (!title.empty()) svg::text(out, {kPad, 22}, title, 14, svg::kNoteInk, "start", true);
     for (std::size_t i = 0; i < caption.size(); ++i) {
         svg::text(out, {kPad, caption_top + kLine * static_cast<double>(i + 1) - 4}, caption[i], kFont);
     }
     out += "</g>\n</svg>\n";
     return out;
+}
+
+}  // namespace
+
+// The drawing in a panel, the coordinate table beside it (small graphs),
+// the caption under both.
+std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
+    svg::Frame frame(dcel.points(), frame_kind(dcel, options.frame));
+    const Xy size = frame.size(kLongest);
+    const double top = options.title.empty() ? kPad : 36;
+    const Box panel{kPad, top, size.x + 2 * kMargin, size.y + 2 * kMargin};
+    frame.place({panel.x + kMargin, panel.y + kMargin, size.x, size.y});
+    const svg::DrawnDcel g(dcel, frame);
+
+    std::string body;
+    const std::vector<std::string> left_out = paint_drawing(body, g, panel, options);
+    const bool table = dcel.num_vertices() > 0 && dcel.num_vertices() <= options.max_table_vertices;
+    Xy table_size{0, 0};
+    if (table) table_size = svg::coordinate_table(body, {panel.right() + 16, panel.y + 8}, dcel.points(), kFont);
+    const std::vector<std::string> caption = caption_of(g, frame, options, table, left_out);
+
+    double width = std::max(panel.right() + (table ? 16 + table_size.x : 0) + kPad, 420.0);
+    for (const std::string& line : caption) width = std::max(width, svg::text_width(line, kFont) + 2 * kPad);
+    const double caption_top = std::max(panel.bottom(), panel.y + 8 + table_size.y) + 10;
+    const double height = caption_top + static_cast<double>(caption.size()) * kLine + 8;
+    return page(width, height, options.title, body, caption, caption_top);
 }
 
 }  // namespace dcel::io

@@ -156,6 +156,22 @@ Polyline DrawnDcel::line(HalfEdgeId h) const {
     return l;
 }
 
+StepLines::StepLines(const DrawnDcel& g) : g_(&g) {
+    const Dcel& d = g.dcel();
+    for (Index h = 0; h < d.num_half_edges(); ++h) {
+        by_ends_.emplace((std::uint64_t{d.origin(HalfEdgeId(h)).index()} << 32) | d.target(HalfEdgeId(h)).index(),
+                         HalfEdgeId(h));
+    }
+}
+
+std::optional<DrawnStep> StepLines::operator()(Index u, Index v) const {
+    const Dcel& d = g_->dcel();
+    if (u >= d.num_vertices() || v >= d.num_vertices()) return std::nullopt;
+    const auto it = by_ends_.find((std::uint64_t{u} << 32) | v);
+    if (it != by_ends_.end()) return DrawnStep{g_->line(it->second), true};
+    return DrawnStep{Polyline{g_->at(VertexId(u)), g_->at(VertexId(v))}, false};
+}
+
 std::vector<Polyline> DrawnDcel::rings(FaceId f) const {
     std::vector<HalfEdgeId> starts;
     if (!d_->outer(f).is_null()) starts.push_back(d_->outer(f));

@@ -8,9 +8,11 @@
 // straight. Internal to the pictures (io/svg.cpp, check/counterexample_svg.cpp).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "dcel/dcel.hpp"
@@ -43,6 +45,25 @@ private:
     std::vector<Xy> at_;
     std::vector<Polyline> edge_line_;  // edge e: from origin(2e) to target(2e)
     std::size_t bent_ = 0;
+};
+
+// The steps of walks given as vertex ids (an answer's cycles, highlighted
+// cycles), as drawn: a step u -> v along the half-edge u -> v when the DCEL
+// has one, else a straight line between the two dots (a wrong answer may
+// step where there is no edge).
+struct DrawnStep {
+    Polyline line;
+    bool along_edge;
+};
+class StepLines {
+public:
+    explicit StepLines(const DrawnDcel& g);
+    // Nothing for a vertex id out of range.
+    [[nodiscard]] std::optional<DrawnStep> operator()(Index u, Index v) const;
+
+private:
+    const DrawnDcel* g_;
+    std::unordered_map<std::uint64_t, HalfEdgeId> by_ends_;  // (origin << 32 | target) -> half-edge
 };
 
 // Painting, in this order: faces, edges, half-edges, vertices.

@@ -109,9 +109,27 @@ Index PointLocator::find_along(Index s, VertexId after) const {
     }
 }
 
+// One segment into the map: the trapezoids it crosses are cut along it,
+// with new trapezoids beyond its ends where no wall stands there yet, and
+// each crossed trapezoid's leaf becomes the subtree that tells the pieces
+// apart.
 void PointLocator::insert(Index s) {
     const Segment seg = segments_[s];
-    // The trapezoids the segment crosses, left to right.
+    const std::vector<Index> crossed = crossed_by(s);
+    const Trapezoid first = trapezoids_[crossed.front()];
+    const Trapezoid last = trapezoids_[crossed.back()];
+    // The parts left of the left end and right of the right end, unless an
+    // existing wall is there already.
+    const Index left_part = first.leftp == seg.left ? kNoIndex
+                                                    : new_trapezoid(first.top, first.bottom, first.leftp, seg.left);
+    const Index right_part = last.rightp == seg.right ? kNoIndex
+                                                      : new_trapezoid(last.top, last.bottom, seg.right, last.rightp);
+    const Sides sides = cut_along(s, crossed);
+    replace_leaves(s, crossed, sides, left_part, right_part);
+}
+
+std::vector<Index> PointLocator::crossed_by(Index s) const {
+    const Segment& seg = segments_[s];
     std::vector<Index> crossed{find_along(s, seg.left)};
     while (!trapezoids_[crossed.back()].rightp.is_null() &&
            lex_less(point(trapezoids_[crossed.back()].rightp), point(seg.right))) {
@@ -121,27 +139,21 @@ void PointLocator::insert(Index s) {
         // the walk always moves right.
         DCEL_ASSERT(trapezoids_[crossed.back()].leftp == wall);
     }
+    return crossed;
+}
+
+// Above and below the segment: a wall at a crossed trapezoid's right vertex
+// survives only on the side of the segment where that vertex is; on the
+// other side the pieces merge across it.
+PointLocator::Sides PointLocator::cut_along(Index s, const std::vector<Index>& crossed) {
+    const Segment seg = segments_[s];
     const std::size_t k = crossed.size() - 1;
-    const Trapezoid first = trapezoids_[crossed[0]];
-    const Trapezoid last = trapezoids_[crossed[k]];
-
-    // The parts left of the left end and right of the right end, unless an
-    // existing wall is there already.
-    const Index left_part = first.leftp == seg.left ? kNoIndex
-                                                    : new_trapezoid(first.top, first.bottom, first.leftp, seg.left);
-    const Index right_part = last.rightp == seg.right ? kNoIndex
-                                                      : new_trapezoid(last.top, last.bottom, seg.right, last.rightp);
-
-    // Above and below the segment: a wall at a crossed trapezoid's right
-    // vertex survives only on the side of the segment where that vertex is;
-    // on the other side the pieces merge across it.
-    std::vector<Index> upper(k + 1);
-    std::vector<Index> lower(k + 1);
-    Index up = new_trapezoid(first.top, s, seg.left, {});
-    Index down = new_trapezoid(s, first.bottom, seg.left, {});
+    Sides sides{std::vector<Index>(k + 1), std::vector<Index>(k + 1)};
+    Index up = new_trapezoid(trapezoids_[crossed[0]].top, s, seg.left, {});
+    Index down = new_trapezoid(s, trapezoids_[crossed[0]].bottom, seg.left, {});
     for (std::size_t j = 0; j <= k; ++j) {
-        upper[j] = up;
-        lower[j] = down;
+        sides.upper[j] = up;
+        sides.lower[j] = down;
         if (j == k) break;
         const VertexId wall = trapezoids_[crossed[j]].rightp;
         const Index next_top = trapezoids_[crossed[j + 1]].top;
@@ -156,13 +168,19 @@ void PointLocator::insert(Index s) {
     }
     trapezoids_[up].rightp = seg.right;
     trapezoids_[down].rightp = seg.right;
+    return sides;
+}
 
-    // Each crossed trapezoid's leaf becomes a small subtree: a Y-node for the
-    // segment, under X-nodes for the ends that fall inside it. The old leaf's
-    // node is overwritten in place, so every parent now reaches the subtree.
+// Each crossed trapezoid's leaf becomes a small subtree: a Y-node for the
+// segment, under X-nodes for the ends that fall inside it. The old leaf's
+// node is overwritten in place, so every parent now reaches the subtree.
+void PointLocator::replace_leaves(Index s, const std::vector<Index>& crossed, const Sides& sides, Index left_part,
+                                  Index right_part) {
+    const Segment seg = segments_[s];
+    const std::size_t k = crossed.size() - 1;
     for (std::size_t j = 0; j <= k; ++j) {
         const Index old_leaf = trapezoids_[crossed[j]].leaf;
-        Node root{NodeKind::Y, s, leaf_of(upper[j]), leaf_of(lower[j])};
+        Node root{NodeKind::Y, s, leaf_of(sides.upper[j]), leaf_of(sides.lower[j])};
         if (j == k && right_part != kNoIndex) {
             nodes_.push_back(root);
             root = Node{NodeKind::X, seg.right.index(), static_cast<Index>(nodes_.size() - 1), leaf_of(right_part)};
