@@ -541,18 +541,40 @@ CheckResult check_hole_placement(const DcelDump& d) {
 
 namespace {
 
+// The checkers in the order validate() runs them, each with the invariants
+// it relies on: references and twin for every lookup, next-prev for every
+// walk, the embedding for the geometric ones. validate() stops at the first
+// violation, so for it every checker before has passed; validate_all() runs
+// each checker whose prerequisites all passed.
 using Checker = CheckResult (*)(const DcelDump&);
-constexpr Checker kCheckers[] = {
-    check_references,    check_twin,       check_next_prev,    check_next_origin,
-    check_face_on_cycle, check_vertex_out, check_face_records, check_isolated_vertices,
-    check_embedding,     check_rotation,   check_orientation,  check_hole_placement,
+constexpr unsigned bit(Invariant i) { return 1U << static_cast<unsigned>(i); }
+struct Step {
+    Invariant invariant;
+    Checker check;
+    unsigned needs;  // bits of the invariants that must hold first
+};
+constexpr unsigned kWalks = bit(Invariant::NextPrev) | bit(Invariant::NextOrigin);
+constexpr Step kSteps[] = {
+    {Invariant::References, check_references, 0},
+    {Invariant::Twin, check_twin, bit(Invariant::References)},
+    {Invariant::NextPrev, check_next_prev, bit(Invariant::References)},
+    {Invariant::NextOrigin, check_next_origin, bit(Invariant::Twin)},
+    {Invariant::FaceOnCycle, check_face_on_cycle, bit(Invariant::Twin)},
+    {Invariant::VertexOut, check_vertex_out, bit(Invariant::Twin)},
+    {Invariant::FaceRecords, check_face_records, bit(Invariant::Twin) | bit(Invariant::NextPrev) | bit(Invariant::FaceOnCycle)},
+    {Invariant::IsolatedVertices, check_isolated_vertices, bit(Invariant::Twin)},
+    {Invariant::Embedding, check_embedding, bit(Invariant::Twin)},
+    {Invariant::Rotation, check_rotation, bit(Invariant::Embedding) | kWalks},
+    {Invariant::Orientation, check_orientation, bit(Invariant::Embedding) | kWalks | bit(Invariant::FaceRecords)},
+    {Invariant::HolePlacement, check_hole_placement,
+     bit(Invariant::Rotation) | bit(Invariant::Orientation) | bit(Invariant::IsolatedVertices)},
 };
 
 }  // namespace
 
 CheckResult validate(const DcelDump& d) {
-    for (const Checker check : kCheckers) {
-        if (auto v = check(d)) return v;
+    for (const Step& step : kSteps) {
+        if (auto v = step.check(d)) return v;
     }
     return {};
 }
@@ -560,30 +582,16 @@ CheckResult validate(const DcelDump& d) {
 CheckResult validate(const Dcel& d) { return validate(to_dump(d)); }
 
 std::vector<Violation> validate_all(const DcelDump& d) {
-    // Checkers depend on those before them: references and twin, next-prev
-    // for every walk, the embedding for the geometric ones. Run each group
-    // only when the groups it depends on passed.
     std::vector<Violation> found;
-    auto run = [&](Checker c) {
-        if (auto v = c(d)) {
+    unsigned held = 0;
+    for (const Step& step : kSteps) {
+        if ((step.needs & held) != step.needs) continue;
+        if (auto v = step.check(d)) {
             found.push_back(std::move(*v));
-            return false;
+        } else {
+            held |= bit(step.invariant);
         }
-        return true;
-    };
-    if (!run(check_references)) return found;
-    const bool twin_ok = run(check_twin);
-    const bool next_ok = run(check_next_prev);
-    if (!twin_ok) return found;
-    const bool origin_ok = run(check_next_origin);
-    const bool face_ok = run(check_face_on_cycle);
-    (void)run(check_vertex_out);
-    const bool records_ok = next_ok && face_ok && run(check_face_records);
-    const bool isolated_ok = run(check_isolated_vertices);
-    if (!run(check_embedding)) return found;
-    const bool rotation_ok = next_ok && origin_ok && run(check_rotation);
-    const bool orientation_ok = next_ok && origin_ok && records_ok && run(check_orientation);
-    if (rotation_ok && orientation_ok && isolated_ok) (void)run(check_hole_placement);
+    }
     return found;
 }
 
