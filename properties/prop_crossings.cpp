@@ -2,15 +2,22 @@
 // find_defects): on valid graphs, on graphs with one planted crossing, touch or
 // overlap, and on raw random segments that may meet in any way. build()
 // must reject exactly the graphs brute force finds a defect in, and the pair
-// it names must really meet the way it says.
+// it names must really meet the way it says. So must validate()'s embedding
+// check, which has its own sweep (src/dcel/validate/), on a dump of the graph.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "dcel/build.hpp"
+#include "dcel/dump.hpp"
 #include "dcel/error.hpp"
 #include "dcel/io/graph_json.hpp"
+#include "dcel/validate.hpp"
 #include "oracles/brute_force.hpp"
 #include "support/graph_case.hpp"
 
@@ -50,6 +57,40 @@ void check_named_defect(const InvalidInput& e, const Defects& found) {
     }
 }
 
+// validate()'s embedding check on a dump that carries just the graph (edge
+// k is half-edges 2k and 2k + 1, next = twin, one face: check_embedding reads
+// only the points and the twin pairs), as an InvalidInput: the kind from
+// the words of the message (build()'s words), the edges from the half-edges.
+std::optional<InvalidInput> embedding_refusal(const PlanarGraph& g) {
+    DcelDump d;
+    d.vertices = g.vertices;
+    for (Index k = 0; k < g.edges.size(); ++k) {
+        const HalfEdgeId h(2 * k);
+        const HalfEdgeId t(2 * k + 1);
+        d.half_edges.push_back({g.edges[k].u, t, t, t, FaceId(0)});
+        d.half_edges.push_back({g.edges[k].v, h, h, h, FaceId(0)});
+    }
+    d.faces.push_back({});
+    const CheckResult v = check_embedding(d);
+    if (!v) return std::nullopt;
+    RC_ASSERT(v->invariant == Invariant::Embedding);
+    const std::pair<const char*, InputErrorKind> words[] = {
+        {" cross; ", InputErrorKind::Crossing},
+        {" lies inside ", InputErrorKind::VertexOnEdge},
+        {" overlap", InputErrorKind::Overlap},
+        {" are at the same point ", InputErrorKind::DuplicatePoint},
+        {" both join vertices ", InputErrorKind::DuplicateEdge},
+    };
+    for (const auto& [text, kind] : words) {
+        if (v->message.find(text) == std::string::npos) continue;
+        std::vector<EdgeId> edges;
+        for (const HalfEdgeId h : v->half_edges) edges.push_back(edge_of(h));
+        return InvalidInput(kind, v->message, v->vertices, edges);
+    }
+    RC_FAIL("an embedding violation of no known kind: " + v->message);
+    return std::nullopt;
+}
+
 RC_GTEST_PROP(Crossings, prop_generated_graphs_have_no_contact_and_build_accepts, ()) {
     const GraphCase c = *graphs();
     RC_ASSERT(find_defects(c.graph).empty());
@@ -78,6 +119,21 @@ RC_GTEST_PROP(Crossings, prop_planted_defect_is_rejected_naming_a_real_contact, 
                                                                         : InputErrorKind::Overlap;
         RC_ASSERT(std::string(to_string(e.kind())) == to_string(expected));
     }
+}
+
+RC_GTEST_PROP(Crossings, prop_validate_names_the_planted_defect, ()) {
+    const GraphCase c = *graphs();
+    const gen::Defect defect = *rc::gen::element(gen::Defect::Crossing, gen::Defect::Touch, gen::Defect::Overlap);
+    const std::optional<PlanarGraph> bad = gen::plant(c.graph, defect, *rc::gen::arbitrary<std::uint64_t>());
+    RC_PRE(bad.has_value());
+    RC_ASSERT(!embedding_refusal(c.graph).has_value());
+    const std::optional<InvalidInput> e = embedding_refusal(*bad);
+    if (!e) RC_FAIL("validate's embedding check passed a graph with a planted defect: " + io::write_graph(*bad));
+    check_named_defect(*e, find_defects(*bad));
+    const InputErrorKind expected = defect == gen::Defect::Crossing ? InputErrorKind::Crossing
+                                    : defect == gen::Defect::Touch  ? InputErrorKind::VertexOnEdge
+                                                                    : InputErrorKind::Overlap;
+    RC_ASSERT(std::string(to_string(e->kind())) == to_string(expected));
 }
 
 // Unchecked segments between random points of a small grid: every kind of
@@ -121,6 +177,15 @@ RC_GTEST_PROP(Crossings, prop_build_rejects_raw_segments_exactly_when_brute_forc
         RC_ASSERT(!found.empty());
         check_named_defect(e, found);
     }
+}
+
+RC_GTEST_PROP(Crossings, prop_validate_flags_raw_segments_exactly_when_brute_force_finds_a_defect, ()) {
+    const RawGraph r = *raw_graphs();
+    const Defects found = find_defects(r.graph);
+    RC_CLASSIFY(found.empty(), "valid");
+    const std::optional<InvalidInput> e = embedding_refusal(r.graph);
+    RC_ASSERT(e.has_value() == !found.empty());
+    if (e) check_named_defect(*e, found);
 }
 
 }  // namespace

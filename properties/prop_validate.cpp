@@ -1,5 +1,6 @@
 // validate() accepts every DCEL that build() makes, and rejects every
-// single-field corruption of one: this shows the checker can fail.
+// single-field corruption of one, and a hole moved to another face with its
+// records kept consistent: this shows the checkers can fail.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -141,6 +142,35 @@ RC_GTEST_PROP(Validate, prop_rejects_every_single_field_corruption, ()) {
     }
     RC_ASSERT(!(d.half_edges == clean.half_edges && d.faces == clean.faces && d.vertex_out == clean.vertex_out));
     RC_ASSERT(validate(d).has_value());
+}
+
+// A hole moved to another face with every record kept consistent: the cycle
+// (a component's outer boundary) is listed by the other face and its
+// half-edges name it. Only the hole-placement checker can see this.
+RC_GTEST_PROP(Validate, prop_rejects_a_hole_moved_to_another_face, ()) {
+    const GraphCase c = *graphs();
+    DcelDump d = to_dump(build(c.graph));
+    const auto faces = static_cast<Index>(d.faces.size());
+    std::vector<Index> with_inner;
+    for (Index f = 0; f < faces; ++f) {
+        if (!d.faces[f].inner.empty()) with_inner.push_back(f);
+    }
+    RC_PRE(!with_inner.empty() && faces > 1);  // a hole, and a face to move it to
+    const Index f = *rc::gen::elementOf(with_inner);
+    const Index g = other_than(f, faces);
+    auto& inner = d.faces[f].inner;
+    const auto k = *rc::gen::inRange<std::size_t>(0, inner.size());
+    const HalfEdgeId hole = inner[k];
+    inner.erase(inner.begin() + static_cast<std::ptrdiff_t>(k));
+    d.faces[g].inner.push_back(hole);
+    HalfEdgeId x = hole;
+    do {
+        d.half_edges[x.index()].face = FaceId(g);
+        x = d.half_edges[x.index()].next;
+    } while (x != hole);
+    const CheckResult v = validate(d);
+    RC_ASSERT(v.has_value());
+    RC_ASSERT(v->invariant == Invariant::HolePlacement);
 }
 
 }  // namespace

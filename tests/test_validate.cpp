@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <iostream>
+#include <limits>
 #include <string>
 
 #include "dcel/build.hpp"
+#include "dcel/error.hpp"
 #include "dcel/validate.hpp"
 
 namespace dcel {
@@ -166,6 +168,78 @@ TEST(Validate, Embedding) {
     d = rich_dump();
     d.vertices[7] = {5, 0};  // isolated vertex on the square's bottom side
     expect_violation(d, Invariant::Embedding, "vertex 7 (5, 0) lies inside");
+}
+
+// A dump that only carries a graph: edge k is half-edges 2k (from u) and
+// 2k + 1, next = twin, one face. Enough for check_embedding, which looks at
+// the points and the twin pairs alone (the underlying graph then numbers its
+// edges as g does).
+DcelDump edges_only_dump(const PlanarGraph& g) {
+    DcelDump d;
+    d.vertices = g.vertices;
+    for (Index k = 0; k < g.edges.size(); ++k) {
+        const HalfEdgeId h(2 * k);
+        const HalfEdgeId t(2 * k + 1);
+        d.half_edges.push_back({g.edges[k].u, t, t, t, FaceId(0)});
+        d.half_edges.push_back({g.edges[k].v, h, h, h, FaceId(0)});
+    }
+    d.faces.push_back({});
+    return d;
+}
+
+PlanarGraph graph_of(std::vector<Point> points, const std::vector<std::pair<Index, Index>>& edges) {
+    PlanarGraph g;
+    g.vertices = std::move(points);
+    for (const auto& [u, v] : edges) g.edges.push_back({VertexId(u), VertexId(v)});
+    return g;
+}
+
+// validate()'s embedding check is its own code (validate/embedding.cpp and
+// segment_sweep.cpp), not build()'s; on each kind of problem it must still
+// refuse what build() refuses, with build()'s words and elements.
+TEST(Validate, EmbeddingRefusesEachProblemAsBuildDoes) {
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::vector<std::pair<const char*, PlanarGraph>> cases = {
+        {"non-finite", graph_of({{0, 0}, {inf, 1}}, {{0, 1}})},
+        {"self-loop", graph_of({{0, 0}, {1, 0}}, {{0, 1}, {1, 1}})},
+        {"same point", graph_of({{0, 0}, {1, 0}, {0, 0}}, {{0, 1}})},
+        {"duplicate edge", graph_of({{0, 0}, {1, 0}, {0, 1}}, {{0, 1}, {0, 2}, {1, 0}})},
+        {"same direction", graph_of({{0, 0}, {2, 0}, {1, 0}}, {{0, 1}, {0, 2}})},
+        {"collinear stretch", graph_of({{0, 0}, {2, 0}, {1, 0}, {3, 0}}, {{0, 1}, {2, 3}})},
+        {"crossing", graph_of({{0, 0}, {2, 2}, {0, 2}, {2, 0}}, {{0, 1}, {2, 3}})},
+        {"vertical crossing", graph_of({{0, -1}, {0, 1}, {-1, 0}, {1, 0}}, {{0, 1}, {2, 3}})},
+        {"right end inside", graph_of({{0, 0}, {4, 0}, {1, 2}, {2, 0}}, {{0, 1}, {2, 3}})},
+        {"left end inside", graph_of({{0, 0}, {4, 4}, {2, 2}, {3, 0}}, {{0, 1}, {2, 3}})},
+        {"lone vertex inside a vertical edge", graph_of({{0, 0}, {0, 2}, {0, 1}}, {{0, 1}})},
+        {"vertical edges overlapping", graph_of({{0, 0}, {0, 2}, {0, 1}, {0, 3}}, {{0, 1}, {2, 3}})},
+    };
+    for (const auto& [name, g] : cases) {
+        SCOPED_TRACE(name);
+        std::string refusal;
+        std::vector<VertexId> vertices;
+        std::vector<EdgeId> edges;
+        try {
+            (void)build(g);
+            FAIL() << "build() accepted it";
+        } catch (const InvalidInput& e) {
+            refusal = e.what();
+            vertices = e.vertices();
+            edges = e.edges();
+        }
+        const CheckResult v = check_embedding(edges_only_dump(g));
+        ASSERT_TRUE(v.has_value());
+        EXPECT_EQ(v->invariant, Invariant::Embedding);
+        EXPECT_EQ(v->message.rfind(refusal, 0), 0U) << v->message << "\nbuild(): " << refusal;
+        EXPECT_EQ(v->vertices, vertices);
+        std::vector<EdgeId> named;
+        for (const HalfEdgeId h : v->half_edges) named.push_back(edge_of(h));
+        EXPECT_EQ(named, edges);
+    }
+    // And it passes what build() accepts, vertical edges and shared x included.
+    const PlanarGraph fine = graph_of({{0, 0}, {0, 2}, {1, 1}, {0, 3}, {1, 3}, {2, 0}},
+                                      {{0, 1}, {0, 2}, {1, 2}, {1, 3}, {3, 4}, {2, 5}, {0, 5}});
+    EXPECT_NO_THROW((void)build(fine));
+    EXPECT_FALSE(check_embedding(edges_only_dump(fine)).has_value());
 }
 
 TEST(Validate, Rotation) {

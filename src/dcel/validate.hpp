@@ -27,6 +27,9 @@
 //                   cycles (a component's outer boundary) have area <= 0
 //   HolePlacement   each component's outer boundary and each isolated vertex
 //                   sits in the face that geometrically contains it
+// The geometric checkers decide with validate()'s own code (src/dcel/validate/:
+// embedding.cpp and segment_sweep.cpp, a sweep of its own), never build()'s,
+// so that a bug in build()'s sweep cannot pass build()'s dumps here too.
 #pragma once
 
 #include <optional>

@@ -2,25 +2,27 @@
 
 #include <algorithm>
 #include <numeric>
+#include <span>
 #include <string>
 
-#include "dcel/build/input_checks.hpp"
-#include "dcel/build/sweep.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/area.hpp"
 #include "dcel/geometry/predicates.hpp"
+#include "dcel/validate/embedding.hpp"
+#include "dcel/validate/segment_sweep.hpp"
 
 namespace dcel {
 
-// From the internals of the core (dcel::detail).
-using detail::Rings;
-using detail::SweepInput;
-using detail::check_elements;
+// From the internals of the core (dcel::detail): the geometry's exact
+// predicates, and validate()'s own drawing checks and sweep, which share no
+// code with build()'s (see validate/embedding.hpp).
+using detail::DrawingProblem;
+using detail::find_drawing_problem;
 using detail::polygon_area_sign;
-using detail::sort_rings_checked;
-using detail::sort_vertices_checked;
-using detail::sweep;
+using detail::SweepAnswers;
+using detail::sweep_order;
+using detail::sweep_segments;
 namespace {
 
 // Sizes as 32-bit counts (references() checks they fit before anything else).
@@ -326,27 +328,20 @@ CheckResult check_isolated_vertices(const DcelDump& d) {
 }
 
 CheckResult check_embedding(const DcelDump& d) {
-    // The graph under the dump must be a planar straight-line graph: the
-    // same checks build() runs on its input, plus the sweep for crossings.
+    // The graph under the dump must be a planar straight-line graph: what
+    // build() requires of its input, decided by validate()'s own code.
     const UnderlyingGraph u = underlying_graph(d);
-    try {
-        check_elements(u.graph);
-        const std::vector<VertexId> order = sort_vertices_checked(u.graph);
-        const Rings rings = sort_rings_checked(u.graph);
-        const std::vector<char> wanted(u.graph.vertices.size(), 0);
-        (void)sweep(SweepInput{u.graph, order, rings.offset, rings.ring, wanted}, true);
-    } catch (const InvalidInput& e) {
-        // The message numbers edges by twin pair; say which half-edges those are.
-        std::vector<HalfEdgeId> hs;
-        std::string message = e.what();
-        for (const EdgeId k : e.edges()) {
-            const HalfEdgeId h = u.to_dump_half_edge[half_edge_of(k, 0).index()];
-            hs.push_back(h);
-            message += "; edge " + std::to_string(k.index()) + " is " + h.str() + "/" + rec(d, h).twin.str();
-        }
-        return violation(Invariant::Embedding, message, e.vertices(), hs);
+    const std::optional<DrawingProblem> problem = find_drawing_problem(u.graph);
+    if (!problem) return {};
+    // The message numbers edges by twin pair; say which half-edges those are.
+    std::vector<HalfEdgeId> hs;
+    std::string message = problem->message;
+    for (const EdgeId k : problem->edges) {
+        const HalfEdgeId h = u.to_dump_half_edge[half_edge_of(k, 0).index()];
+        hs.push_back(h);
+        message += "; edge " + std::to_string(k.index()) + " is " + h.str() + "/" + rec(d, h).twin.str();
     }
-    return {};
+    return violation(Invariant::Embedding, message, problem->vertices, hs);
 }
 
 CheckResult check_rotation(const DcelDump& d) {
@@ -424,15 +419,12 @@ CheckResult check_orientation(const DcelDump& d) {
     return {};
 }
 
-CheckResult check_hole_placement(const DcelDump& d) {
-    const UnderlyingGraph u = underlying_graph(d);
-    const PlanarGraph& g = u.graph;
-    const auto n = static_cast<Index>(g.vertices.size());
-    const std::vector<VertexId> order = sort_vertices_checked(g);
-    const Rings rings = sort_rings_checked(g);
+namespace {
 
-    // Components by union-find; the leftmost vertex of each is its first in
-    // sweep order.
+// The components of g (by union-find) and the leftmost vertex of each, its
+// first in sweep order; returned in sweep order.
+std::vector<VertexId> leftmost_vertices(const PlanarGraph& g, std::span<const VertexId> order) {
+    const auto n = static_cast<Index>(g.vertices.size());
     std::vector<Index> parent(n);
     std::iota(parent.begin(), parent.end(), 0);
     auto root = [&](Index x) {
@@ -444,85 +436,145 @@ CheckResult check_hole_placement(const DcelDump& d) {
         const Index b = root(e.v.index());
         if (a != b) parent[std::max(a, b)] = std::min(a, b);
     }
-    std::vector<char> wanted(n, 0);
     std::vector<char> root_seen(n, 0);
     std::vector<VertexId> leftmost;
     for (const VertexId v : order) {
         const Index r = root(v.index());
         if (root_seen[r] == 0) {
             root_seen[r] = 1;
-            wanted[v.index()] = 1;
             leftmost.push_back(v);
         }
     }
-    const std::vector<EdgeId> below = sweep(SweepInput{g, order, rings.offset, rings.ring, wanted}, false);
+    return leftmost;
+}
 
+// For each vertex v with wanted[v] set and edges, the half-edge leaving it
+// whose left side holds the direction west: counterclockwise from east, the
+// last one before west (in the upper half-plane), or when none is there, the
+// last one of all. For a component's leftmost vertex it is on the
+// component's outer boundary. O(H).
+std::vector<HalfEdgeId> west_facing(const DcelDump& d, const std::vector<char>& wanted) {
+    std::vector<HalfEdgeId> best(d.vertices.size());
+    for (Index i = 0; i < d.half_edges.size(); ++i) {
+        const HalfEdgeId h(i);
+        const VertexId v = d.half_edges[i].origin;
+        if (wanted[v.index()] == 0) continue;
+        HalfEdgeId& b = best[v.index()];
+        if (b.is_null()) {
+            b = h;
+            continue;
+        }
+        const Point c = point_of(d, v);
+        const Point th = point_of(d, target_of(d, h));
+        const Point tb = point_of(d, target_of(d, b));
+        const bool h_upper = angular_half(c, th) == 0;
+        const bool b_upper = angular_half(c, tb) == 0;
+        if (h_upper != b_upper ? h_upper : compare_angle(c, tb, th) == Sign::Negative) b = h;
+    }
+    return best;
+}
+
+FaceId unbounded_face(const DcelDump& d) {
     FaceId unbounded;
     for (Index i = 0; i < d.faces.size(); ++i) {
         if (d.faces[i].outer.is_null()) unbounded = FaceId(i);
     }
-    std::vector<FaceId> isolated_in(n);
-    for (Index i = 0; i < d.faces.size(); ++i) {
-        for (const VertexId v : d.faces[i].isolated) isolated_in[v.index()] = FaceId(i);
-    }
+    return unbounded;
+}
 
+// The face just above edge e (null: nothing, so the unbounded face): the
+// face of e's half-edge that runs left to right.
+FaceId face_above(const DcelDump& d, const UnderlyingGraph& u, EdgeId e, FaceId unbounded) {
+    if (e.is_null()) return unbounded;
+    const PlanarGraph& g = u.graph;
+    const HalfEdgeId forward = half_edge_of(e, 0);
+    const bool left_to_right =
+        lex_less(g.vertices[graph_origin(g, forward).index()], g.vertices[graph_target(g, forward).index()]);
+    return rec(d, u.to_dump_half_edge[(left_to_right ? forward : twin(forward)).index()]).face;
+}
+
+std::vector<FaceId> face_of_isolated(const DcelDump& d) {
+    std::vector<FaceId> in(d.vertices.size());
+    for (Index i = 0; i < d.faces.size(); ++i) {
+        for (const VertexId v : d.faces[i].isolated) in[v.index()] = FaceId(i);
+    }
+    return in;
+}
+
+Violation misplaced(VertexId v, HalfEdgeId witness, FaceId actual, FaceId expected, EdgeId below) {
+    const std::string what = witness.is_null() ? "isolated vertex " + v.str()
+                                               : "the component whose leftmost vertex is " + v.str() +
+                                                     " (outer boundary through " + witness.str() + ")";
+    return violation(Invariant::HolePlacement,
+                     what + " is placed in " + actual.str() + " but lies in " + expected.str() +
+                         (below.is_null() ? std::string(" (nothing is below it)") : " (the face above the edge below it)"),
+                     {v}, witness.is_null() ? std::vector<HalfEdgeId>{} : std::vector<HalfEdgeId>{witness},
+                     {actual, expected});
+}
+
+}  // namespace
+
+CheckResult check_hole_placement(const DcelDump& d) {
+    // Each component lies in the face that holds the point just below its
+    // leftmost vertex v: the face above the edge directly below v, which
+    // validate()'s own sweep finds. The dump places the component by its
+    // outer boundary, the cycle through the half-edge at v facing west (an
+    // isolated vertex by the face listing it).
+    const UnderlyingGraph u = underlying_graph(d);
+    const std::vector<VertexId> order = sweep_order(u.graph);
+    const std::vector<VertexId> leftmost = leftmost_vertices(u.graph, order);
+    std::vector<char> wanted(d.vertices.size(), 0);
+    for (const VertexId v : leftmost) wanted[v.index()] = 1;
+    const SweepAnswers answers = sweep_segments(u.graph, order, wanted, false);
+    const std::vector<HalfEdgeId> witness = west_facing(d, wanted);
+    const std::vector<FaceId> isolated_in = face_of_isolated(d);
+    const FaceId unbounded = unbounded_face(d);
     for (const VertexId v : leftmost) {
-        // Expected: the face just above the edge below v (its half-edge
-        // running left to right has that face on its left).
-        FaceId expected = unbounded;
-        const EdgeId e = below[v.index()];
-        if (!e.is_null()) {
-            const HalfEdgeId forward = half_edge_of(e, 0);
-            const bool left_to_right = lex_less(g.vertices[graph_origin(g, forward).index()],
-                                                g.vertices[graph_target(g, forward).index()]);
-            const HalfEdgeId upper = u.to_dump_half_edge[(left_to_right ? forward : twin(forward)).index()];
-            expected = rec(d, upper).face;
-        }
-        // Actual: where the dump puts v's component, via its outer boundary:
-        // the half-edge at v whose left side holds the direction west.
-        const Index first = rings.offset[v.index()];
-        const Index degree = rings.offset[v.index() + 1] - first;
-        FaceId actual;
-        HalfEdgeId witness;
-        if (degree == 0) {
-            actual = isolated_in[v.index()];
-        } else {
-            Index k = 0;
-            while (k < degree &&
-                   angular_half(g.vertices[v.index()], g.vertices[graph_target(g, rings.ring[first + k]).index()]) == 0) {
-                ++k;
-            }
-            witness = u.to_dump_half_edge[rings.ring[first + (k + degree - 1) % degree].index()];
-            actual = rec(d, witness).face;
-        }
-        if (actual != expected) {
-            const std::string what = degree == 0 ? "isolated vertex " + v.str()
-                                                 : "the component whose leftmost vertex is " + v.str() +
-                                                       " (outer boundary through " + witness.str() + ")";
-            return violation(
-                Invariant::HolePlacement,
-                what + " is placed in " + actual.str() + " but lies in " + expected.str() +
-                    (e.is_null() ? std::string(" (nothing is below it)") : " (the face above the edge below it)"),
-                {v}, witness.is_null() ? std::vector<HalfEdgeId>{} : std::vector<HalfEdgeId>{witness}, {actual, expected});
-        }
+        const EdgeId below = answers.below[v.index()];
+        const FaceId expected = face_above(d, u, below, unbounded);
+        const HalfEdgeId w = witness[v.index()];
+        const FaceId actual = w.is_null() ? isolated_in[v.index()] : rec(d, w).face;
+        if (actual != expected) return misplaced(v, w, actual, expected, below);
     }
     return {};
 }
 
 namespace {
 
+// The checkers in the order validate() runs them, each with the invariants
+// it relies on: references and twin for every lookup, next-prev for every
+// walk, the embedding for the geometric ones. validate() stops at the first
+// violation, so for it every checker before has passed; validate_all() runs
+// each checker whose prerequisites all passed.
 using Checker = CheckResult (*)(const DcelDump&);
-constexpr Checker kCheckers[] = {
-    check_references,    check_twin,       check_next_prev,    check_next_origin,
-    check_face_on_cycle, check_vertex_out, check_face_records, check_isolated_vertices,
-    check_embedding,     check_rotation,   check_orientation,  check_hole_placement,
+constexpr unsigned bit(Invariant i) { return 1U << static_cast<unsigned>(i); }
+struct Step {
+    Invariant invariant;
+    Checker check;
+    unsigned needs;  // bits of the invariants that must hold first
+};
+constexpr unsigned kWalks = bit(Invariant::NextPrev) | bit(Invariant::NextOrigin);
+constexpr Step kSteps[] = {
+    {Invariant::References, check_references, 0},
+    {Invariant::Twin, check_twin, bit(Invariant::References)},
+    {Invariant::NextPrev, check_next_prev, bit(Invariant::References)},
+    {Invariant::NextOrigin, check_next_origin, bit(Invariant::Twin)},
+    {Invariant::FaceOnCycle, check_face_on_cycle, bit(Invariant::Twin)},
+    {Invariant::VertexOut, check_vertex_out, bit(Invariant::Twin)},
+    {Invariant::FaceRecords, check_face_records, bit(Invariant::Twin) | bit(Invariant::NextPrev) | bit(Invariant::FaceOnCycle)},
+    {Invariant::IsolatedVertices, check_isolated_vertices, bit(Invariant::Twin)},
+    {Invariant::Embedding, check_embedding, bit(Invariant::Twin)},
+    {Invariant::Rotation, check_rotation, bit(Invariant::Embedding) | kWalks},
+    {Invariant::Orientation, check_orientation, bit(Invariant::Embedding) | kWalks | bit(Invariant::FaceRecords)},
+    {Invariant::HolePlacement, check_hole_placement,
+     bit(Invariant::Rotation) | bit(Invariant::Orientation) | bit(Invariant::IsolatedVertices)},
 };
 
 }  // namespace
 
 CheckResult validate(const DcelDump& d) {
-    for (const Checker check : kCheckers) {
-        if (auto v = check(d)) return v;
+    for (const Step& step : kSteps) {
+        if (auto v = step.check(d)) return v;
     }
     return {};
 }
@@ -530,30 +582,16 @@ CheckResult validate(const DcelDump& d) {
 CheckResult validate(const Dcel& d) { return validate(to_dump(d)); }
 
 std::vector<Violation> validate_all(const DcelDump& d) {
-    // Checkers depend on those before them: references and twin, next-prev
-    // for every walk, the embedding for the geometric ones. Run each group
-    // only when the groups it depends on passed.
     std::vector<Violation> found;
-    auto run = [&](Checker c) {
-        if (auto v = c(d)) {
+    unsigned held = 0;
+    for (const Step& step : kSteps) {
+        if ((step.needs & held) != step.needs) continue;
+        if (auto v = step.check(d)) {
             found.push_back(std::move(*v));
-            return false;
+        } else {
+            held |= bit(step.invariant);
         }
-        return true;
-    };
-    if (!run(check_references)) return found;
-    const bool twin_ok = run(check_twin);
-    const bool next_ok = run(check_next_prev);
-    if (!twin_ok) return found;
-    const bool origin_ok = run(check_next_origin);
-    const bool face_ok = run(check_face_on_cycle);
-    (void)run(check_vertex_out);
-    const bool records_ok = next_ok && face_ok && run(check_face_records);
-    const bool isolated_ok = run(check_isolated_vertices);
-    if (!run(check_embedding)) return found;
-    const bool rotation_ok = next_ok && origin_ok && run(check_rotation);
-    const bool orientation_ok = next_ok && origin_ok && records_ok && run(check_orientation);
-    if (rotation_ok && orientation_ok && isolated_ok) (void)run(check_hole_placement);
+    }
     return found;
 }
 
