@@ -9,7 +9,8 @@
 // UTF-8, parses with the library's JsonReader and gives back every field
 // (messages byte for byte); an answer that differs is drawn
 // (check/counterexample_svg.hpp) from its cycles and polygons as
-// `dcel diff --svg` prepares them (support/answer_drawing.hpp). Every kind
+// `dcel diff --svg` prepares them (support/answer_drawing.hpp); validate()
+// and validate_all() agree on a dump read. Every kind
 // the text's shape fits reads as that kind (`dcel diff` reads them without
 // a net), and under each of them and each of the eight convention
 // combinations the checker's verdict is the independent oracle's
@@ -31,7 +32,9 @@
 //   the spellings docs/checking.md allows, maybe corrupted. The checker must
 //   agree exactly when the oracle finds the answer right: always for a
 //   respelling, and after a corruption only when it kept the meaning. Then
-//   the text gets every check of mode A.
+//   the text gets every check of mode A, and so does the reference's answer
+//   as `dcel faces --answer KIND` prints it (check::reference_answer), which
+//   must agree.
 // The header is printable, so that seeds can be written by hand: "1a83" and
 // "8" is family 1 (triangulation), seed 97 ('a'), 8 vertices, polygons,
 // mode B; "3e<0" and "1" are nested polygons, seed 101, 12 vertices ('<'),
@@ -51,6 +54,7 @@
 #include "dcel/format.hpp"
 #include "dcel/gen/generate.hpp"
 #include "dcel/io/json_reader.hpp"
+#include "dcel/validate.hpp"
 #include "oracles/answer_meaning.hpp"
 #include "support/answer_drawing.hpp"
 #include "support/answer_plain.hpp"
@@ -221,7 +225,13 @@ Report judge(const PlanarGraph& g, const Dcel& reference, const oracle::AnswerJu
     } catch (const InvalidInput& e) {
         Report report = check::unreadable_answer(std::string("ANSWER -: ") + e.what());
         check_report(reference, report);
+        // Nothing to draw but the picture's own refusal: no reference given.
+        FUZZ_CHECK(check::render_counterexample_svg({.graph = &g}).find("<svg") != std::string::npos, "no picture");
         return report;
+    }
+    if (answer.kind == AnswerKind::Dump) {
+        FUZZ_CHECK(validate(answer.dump).has_value() == !validate_all(answer.dump).empty(),
+                   "validate and validate_all disagree on a dump read");
     }
     FUZZ_CHECK(!answer.fits.empty() && answer.fits.front() == answer.kind, "fits does not start with the kind read");
     FUZZ_CHECK(!kind || answer.kind == *kind, "read as another kind than the one given");
@@ -303,6 +313,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                                           << trial.story);
     const std::string failure = testing::judge_trial(reference, trial);
     FUZZ_CHECK(failure.empty(), failure);
+    // The reference's answer as `dcel faces --answer KIND` prints it, plainly.
+    const std::string own = check::reference_answer(reference, setup.kind);
+    FUZZ_CHECK(judge(g, reference, meaning, own, setup.kind, {}).agrees(), "the reference's own answer differs: " << own);
     (void)judge(g, reference, meaning, trial.text, kind, c);
     return 0;
 }

@@ -281,6 +281,16 @@ void corrupt_dump(DcelDump& d, Choices& c, std::string& story) {
         }
         case 8:
             if (d.vertex_out.empty()) break;
+            if (c.one_in(4)) {
+                // One entry per vertex, or none given at all.
+                if (c.one_in(2)) {
+                    d.vertex_out.pop_back();
+                } else {
+                    d.vertex_out.push_back(any_half_edge(d, c));
+                }
+                story += "vertex_out of the wrong length\n";
+                return;
+            }
             d.vertex_out[c.below(d.vertex_out.size())] = c.one_in(3) ? HalfEdgeId() : any_half_edge(d, c);
             story += "set a vertex_out\n";
             return;
