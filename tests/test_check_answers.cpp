@@ -228,6 +228,28 @@ TEST(CheckRegions, DegenerateRingsCancelLikeTheirLongSpellings) {
     }
 }
 
+// A ring of zero area has no direction to read off its area, so it means
+// the walk as written, in the answer's convention: with faces on the right,
+// backwards. A square with a bowtie inside: triangles 4-5-6 and 4-7-8 of
+// equal area (4) touching at 4. Face f1, the square around the bowtie, is
+// also the sum of the square, the figure eight [4, 5, 6, 4, 8, 7] (the
+// first triangle counterclockwise, the second clockwise: no area) and the
+// first triangle clockwise twice. The same answer written with faces on the
+// right, every ring reversed, is f1 too.
+TEST(CheckRegions, ARingWithoutAreaIsReadInTheAnswersConvention) {
+    const Dcel d = reference(R"({"vertices": [[0,0],[8,0],[8,8],[0,8],[4,4],[2,6],[2,2],[6,2],[6,6]],
+        "edges": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6],[6,4],[4,7],[7,8],[8,4]]})");
+    const char* left = R"({"polygons": [[[0,1,2,3],[4,5,6,4,8,7],[4,6,5],[4,6,5]], [[4,5,6]], [[4,7,8]]]})";
+    const char* right = R"({"polygons": [[[3,2,1,0],[7,8,4,6,5,4],[5,6,4],[5,6,4]], [[6,5,4]], [[8,7,4]]]})";
+    for (const bool unoriented : {false, true}) {
+        EXPECT_TRUE(check_text(d, left, AnswerKind::Polygons, {.unoriented = unoriented}).agrees());
+        EXPECT_TRUE(check_text(d, right, AnswerKind::Polygons, {.face_on_right = true, .unoriented = unoriented}).agrees());
+        // Read in the other convention, the figure eight runs the other way.
+        EXPECT_FALSE(check_text(d, left, AnswerKind::Polygons, {.face_on_right = true, .unoriented = true}).agrees());
+        EXPECT_FALSE(check_text(d, right, AnswerKind::Polygons, {.unoriented = true}).agrees());
+    }
+}
+
 // A polygon that walks a half-edge twice (its hole listed twice) is no face:
 // a difference, not a crash in the part that explains what a face lacks.
 TEST(CheckRegions, ARingListedTwiceIsADifference) {

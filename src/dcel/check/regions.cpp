@@ -307,10 +307,17 @@ private:
     // --face-on right): a polygon ring that does not is reported, unless
     // --unoriented. Then every ring is turned to the reference's direction
     // (face on the left: shells counterclockwise, holes clockwise), so the
-    // chains compare. A ring of zero area (it goes back over itself) keeps
-    // its direction: it either cancels or matches nothing.
+    // chains compare. A ring of zero area has no direction to read off its
+    // area: it is the walk as written, in the answer's convention (with
+    // --face-on right, backwards). Most such rings go back over themselves
+    // and cancel, but a figure eight of two lobes of equal area, one each
+    // way, is a sum like any other, and other rings of the polygon may make
+    // it a face's boundary.
     void orient(std::size_t p, std::size_t r, bool shell, const std::vector<Index>& vs, MappedRing& m) {
-        if (m.area == Sign::Zero) return;
+        if (m.area == Sign::Zero) {
+            if (conventions_.face_on_right) reverse(m);
+            return;
+        }
         const bool ccw = m.area == Sign::Positive;
         const bool want_ccw = shell != conventions_.face_on_right;
         if (!rings_ && !conventions_.unoriented && ccw != want_ccw && out_.wants(DifferenceKind::WrongOrientation)) {
@@ -321,7 +328,10 @@ private:
                          (conventions_.face_on_right ? " with --face-on right" : " (GeoJSON's right-hand rule)"),
                      vs);
         }
-        if (ccw == (rings_ || shell)) return;
+        if (ccw != (rings_ || shell)) reverse(m);
+    }
+
+    static void reverse(MappedRing& m) {
         std::reverse(m.walk.begin(), m.walk.end());
         for (HalfEdgeId& h : m.walk) h = twin(h);
     }
