@@ -36,7 +36,7 @@ std::pair<check::Report, std::string> compare_text(const Dcel& reference, const 
 }  // namespace
 
 py::list violations_to_python(const std::vector<Violation>& all) {
-    const py::object type = value_type("Violation");
+    const py::handle type = value_type("Violation");
     py::list out;
     for (const Violation& v : all) {
         out.append(type(to_string(v.invariant), v.message, ids_to_python(v.vertices), ids_to_python(v.half_edges),
@@ -62,7 +62,7 @@ void bind_check(py::module_& m) {
                 result = compare_text(reference.get(), text, chosen, conventions);
             }
             const check::Report& report = result.first;
-            const py::object type = value_type("Difference");
+            const py::handle type = value_type("Difference");
             py::list differences;
             for (const check::Difference& d : report.differences) {
                 py::list vertices;

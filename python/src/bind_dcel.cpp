@@ -56,7 +56,7 @@ py::object location(const Location& l) {
 }
 
 py::list pieces(const std::vector<StabPiece>& v) {
-    const py::object piece = value_type("StabPiece");
+    const py::handle piece = value_type("StabPiece");
     py::list out;
     for (const StabPiece& p : v) {
         switch (p.kind) {
@@ -371,7 +371,7 @@ void bind_dcel(py::module_& m) {
         .def(
             "to_dump",
             [](const DcelObject& s) {
-                return py::module_::import("json").attr("loads")(io::write_dump(to_dump(s.get()), io::DumpStyle::Compact));
+                return imported().json_loads(io::write_dump(to_dump(s.get()), io::DumpStyle::Compact));
             },
             "The dump as a dict of lists: vertices, vertex_out, half_edges, faces (the `dcel build` format).")
         .def(

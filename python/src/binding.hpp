@@ -1,4 +1,5 @@
 // The pieces of the Python extension dcel._dcel, one file per area:
+// imports.cpp (everything looked up in Python, once, at import),
 // inputs.cpp (Python values in: graphs, points, ids), errors.cpp (C++
 // exceptions out as dcel.InvalidInput / dcel.TopologyError),
 // bind_dcel.cpp (the Dcel class: numpy views, queries, edits),
@@ -29,8 +30,16 @@ namespace py = pybind11;
 // Points are copied and viewed as (n, 2) float64 arrays: x then y, nothing else.
 static_assert(sizeof(Point) == 2 * sizeof(double) && std::is_standard_layout_v<Point>);
 
+// ---- Imports (imports.cpp), all made by prepare_imports() at import time.
+void prepare_imports();
 // A value type or exception class of dcel._types (Graph, Face, Location, ...).
-[[nodiscard]] py::object value_type(const char* name);
+[[nodiscard]] py::handle value_type(const char* name);
+struct Imported {
+    py::handle asarray;            // numpy.asarray
+    py::handle ascontiguousarray;  // numpy.ascontiguousarray
+    py::handle json_loads;         // json.loads
+};
+[[nodiscard]] const Imported& imported();
 
 // ---- Inputs (inputs.cpp). Every failure is InvalidInput with a message that
 // names the place ("vertices[3]: ...", "edges[2][1]: ...").

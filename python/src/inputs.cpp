@@ -34,9 +34,8 @@ std::string shape_of(const py::array& a) {
 // or InvalidInput(Shape) carrying numpy's complaint.
 py::array as_array(py::handle value, const char* dtype, std::string_view what) {
     try {
-        const py::module_ np = py::module_::import("numpy");
-        if (dtype == nullptr) return np.attr("asarray")(value);
-        return np.attr("ascontiguousarray")(value, py::arg("dtype") = dtype);
+        if (dtype == nullptr) return imported().asarray(value);
+        return imported().ascontiguousarray(value, py::arg("dtype") = dtype);
     } catch (const py::error_already_set& e) {
         // numpy says e.g. "could not convert string to float: 'a'".
         fail(InputErrorKind::Shape, std::string(what) + ": " + py::str(e.value()).cast<std::string>());
@@ -216,22 +215,22 @@ std::vector<GraphEdge> edges_from(py::handle edges) {
     }
     std::vector<GraphEdge> out(static_cast<std::size_t>(a.shape(0)));
     const char kind = a.dtype().kind();
-    const py::module_ np = py::module_::import("numpy");
+    const py::handle contiguous = imported().ascontiguousarray;
     // Read the common dtypes in place; convert the rest once.
     if (kind == 'i') {
         if (a.dtype().itemsize() == 4) {
-            read_edges<std::int32_t>(np.attr("ascontiguousarray")(a), out);
+            read_edges<std::int32_t>(contiguous(a), out);
         } else {
-            read_edges<std::int64_t>(np.attr("ascontiguousarray")(a, py::arg("dtype") = "int64"), out);
+            read_edges<std::int64_t>(contiguous(a, py::arg("dtype") = "int64"), out);
         }
     } else if (kind == 'u') {
         if (a.dtype().itemsize() == 4) {
-            read_edges<std::uint32_t>(np.attr("ascontiguousarray")(a), out);
+            read_edges<std::uint32_t>(contiguous(a), out);
         } else {
-            read_edges<std::uint64_t>(np.attr("ascontiguousarray")(a, py::arg("dtype") = "uint64"), out);
+            read_edges<std::uint64_t>(contiguous(a, py::arg("dtype") = "uint64"), out);
         }
     } else if (kind == 'f') {
-        read_edges<double>(np.attr("ascontiguousarray")(a, py::arg("dtype") = "float64"), out);
+        read_edges<double>(contiguous(a, py::arg("dtype") = "float64"), out);
     } else {
         fail(InputErrorKind::Shape, "edges: expected pairs of vertex indexes (integers), found numpy dtype " +
                                         py::str(a.dtype()).cast<std::string>());
@@ -240,8 +239,6 @@ std::vector<GraphEdge> edges_from(py::handle edges) {
 }
 
 }  // namespace
-
-py::object value_type(const char* name) { return py::module_::import("dcel._types").attr(name); }
 
 PlanarGraph graph_from(py::handle vertices, py::handle edges) {
     PlanarGraph g;
