@@ -26,13 +26,13 @@ void register_errors(py::module_& /*m*/) {
             if (p) std::rethrow_exception(p);
         } catch (const InvalidInput& e) {
             const py::handle cls = value_type("InvalidInput");
-            raise(cls, cls(e.what(), to_string(e.kind()), indexes(e.vertices()), indexes(e.edges())));
+            raise(cls, cls(message_str(e.what()), to_string(e.kind()), indexes(e.vertices()), indexes(e.edges())));
         } catch (const TopologyError& e) {
             const py::handle cls = value_type("TopologyError");
-            raise(cls, cls(e.what()));
+            raise(cls, cls(message_str(e.what())));
         } catch (const EditRefused& e) {
             const py::handle cls = value_type("TopologyError");
-            raise(cls, cls(e.message, py::cast(e.vertices), py::cast(e.edges)));
+            raise(cls, cls(message_str(e.message), py::cast(e.vertices), py::cast(e.edges)));
         }
     });
 }

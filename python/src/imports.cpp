@@ -38,7 +38,17 @@ void prepare_imports() {
     static_cast<void>(py::detail::npy_api::get());
     imports.asarray = keep(numpy.attr("asarray"));
     imports.ascontiguousarray = keep(numpy.attr("ascontiguousarray"));
+    imports.ndarray_tolist = keep(numpy.attr("ndarray").attr("tolist"));
     imports.json_loads = keep(py::module_::import("json").attr("loads"));
+    imports.mapping = keep(py::module_::import("collections.abc").attr("Mapping"));
+    // Small limits, so that a message never shows (or takes the time to
+    // write) more than a few items of a huge or deeply nested value.
+    py::object repr = py::module_::import("reprlib").attr("Repr")();
+    repr.attr("maxlevel") = 3;
+    repr.attr("maxstring") = 40;
+    repr.attr("maxlong") = 40;
+    repr.attr("maxother") = 40;
+    imports.short_repr = keep(repr.attr("repr"));
     // dcel/__init__.py imports dcel._types before this extension.
     const py::module_ types = py::module_::import("dcel._types");
     for (std::size_t i = 0; i < kValueTypes.size(); ++i) value_types[i] = keep(types.attr(kValueTypes[i]));
