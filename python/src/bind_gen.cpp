@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include "binding.hpp"
+#include "dcel/build.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/gen/generate.hpp"
@@ -23,6 +24,18 @@ std::string family_list() {
 }
 
 py::object optional_graph(const std::optional<PlanarGraph>& g) { return g ? graph_to_python(*g) : py::none(); }
+
+// A graph argument of plant and the shrinkers, which take it as valid (they
+// index points by the edges' vertex ids, and keep it free of crossings): an
+// invalid one read out of bounds. Refused as build() refuses it.
+PlanarGraph valid_graph_from(py::handle graph) {
+    PlanarGraph g = graph_from(graph);
+    {
+        const py::gil_scoped_release unlocked;
+        static_cast<void>(build(g));  // InvalidInput, naming the offending vertices and edges
+    }
+    return g;
+}
 
 }  // namespace
 
@@ -61,12 +74,13 @@ void bind_gen(py::module_& m) {
         "shrink_candidates",
         [](const py::object& graph) {
             py::list out;
-            for (const PlanarGraph& c : gen::shrink_candidates(graph_from(graph))) out.append(graph_to_python(c));
+            for (const PlanarGraph& c : gen::shrink_candidates(valid_graph_from(graph))) out.append(graph_to_python(c));
             return out;
         },
         py::arg("graph"),
         "Smaller valid graphs derived from graph, most aggressive first: without edges, without a vertex,\n"
-        "coordinates snapped to small integers where that stays valid.");
+        "coordinates snapped to small integers where that stays valid. graph must be valid (InvalidInput as\n"
+        "from build() when not).");
     m.def(
         "shrink",
         [](const py::object& graph, const py::object& still_fails, const IntArg& max_steps_arg) {
@@ -75,7 +89,7 @@ void bind_gen(py::module_& m) {
             }
             const std::size_t max_steps = count_from(max_steps_arg, std::numeric_limits<std::uint32_t>::max(),
                                                      "shrink: max_steps");
-            const PlanarGraph start = graph_from(graph);
+            const PlanarGraph start = valid_graph_from(graph);
             // Truth as `if still_fails(g):` takes it; an exception the
             // predicate raises is its own, and goes on as it is.
             const auto test = [&](const PlanarGraph& g) {
@@ -88,8 +102,8 @@ void bind_gen(py::module_& m) {
         },
         py::arg("graph"), py::arg("still_fails"), py::arg("max_steps") = 20000,
         "Greedy shrinking (what `dcel diff` does): moves to the first shrink candidate for which still_fails(g)\n"
-        "is true, until none is or max_steps calls are spent. Returns the smallest failing graph found. An\n"
-        "exception still_fails raises goes on as it is.");
+        "is true, until none is or max_steps calls are spent. Returns the smallest failing graph found. graph\n"
+        "must be valid (InvalidInput as from build() when not); an exception still_fails raises goes on as it is.");
     m.def(
         "transform",
         [](const py::object& graph, const TextArg& kind_arg, const IntArg& amount_arg) {
@@ -122,11 +136,12 @@ void bind_gen(py::module_& m) {
             else
                 throw InvalidInput(InputErrorKind::Shape, "plant: unknown defect " + quote_for_message(defect) +
                                                               "; the defects are crossing, touch, overlap");
-            return optional_graph(gen::plant(graph_from(graph), d, seed));
+            return optional_graph(gen::plant(valid_graph_from(graph), d, seed));
         },
         py::arg("graph"), py::arg("defect"), py::arg("seed") = 0,
         "graph with one defect planted, an invalid graph that build() refuses: \"crossing\", \"touch\" (a vertex\n"
-        "inside an edge) or \"overlap\" (collinear edges sharing more than a point). None when there is no place.");
+        "inside an edge) or \"overlap\" (collinear edges sharing more than a point). None when there is no place.\n"
+        "graph must be valid (InvalidInput as from build() when not).");
 }
 
 }  // namespace dcel::python
