@@ -8,6 +8,7 @@ import numpy.typing as npt
 from ._types import Area, Change, Difference, Face, Graph, Location, StabPiece, Violation
 
 NULL: int
+_JSON_MAX_DEPTH: int
 
 _PointLike = Union[Tuple[float, float], Sequence[float], npt.ArrayLike]
 _VerticesLike = Union[Sequence[Sequence[float]], npt.ArrayLike]

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import operator
 import os
 import re
 import tempfile
@@ -28,7 +29,7 @@ from hypothesis import assume
 from hypothesis import strategies as st
 
 from . import _dcel
-from ._check import check
+from ._check import _is_dcel, _json_cut, _shown, check
 from ._types import Graph
 
 __all__ = ["planar_graphs", "assert_same_faces", "COORDINATES"]
@@ -73,14 +74,24 @@ def planar_graphs(
     is one that dcel.build() accepts.
     """
     known = _dcel.families()
-    if coordinates not in COORDINATES:
-        raise ValueError(f"planar_graphs: coordinates must be one of {COORDINATES}, not {coordinates!r}")
+    if _name(coordinates, COORDINATES) is None:
+        raise ValueError(f"planar_graphs: coordinates must be one of {COORDINATES}, not {_shown(coordinates)}")
+    coordinates = _name(coordinates, COORDINATES)
     if families is None:
         families = [f for f in known if not (coordinates == "integers" and f == "near-degenerate")]
-    families = list(families)
-    unknown = [f for f in families if f not in known]
+    try:
+        given = tuple(families)
+    except Exception as e:  # not iterable, or its own __iter__ raises
+        raise TypeError(f"planar_graphs: families: expected family names, found {_shown(families)}") from e
+    families = [_name(f, known) for f in given]
+    unknown = [_shown(f) for f, name in zip(given, families) if name is None]
     if not families or unknown:
-        raise ValueError(f"planar_graphs: unknown families {unknown}; the families are {', '.join(known)}")
+        raise ValueError(f"planar_graphs: unknown families {', '.join(unknown)}; the families are {', '.join(known)}")
+    try:
+        min_vertices, max_vertices = operator.index(min_vertices), operator.index(max_vertices)
+    except Exception as e:
+        raise TypeError(f"planar_graphs: min_vertices and max_vertices must be integers, found "
+                        f"{_shown(min_vertices)} and {_shown(max_vertices)}") from e
     if not 0 <= min_vertices <= max_vertices <= 10000:
         raise ValueError("planar_graphs: need 0 <= min_vertices <= max_vertices <= 10000")
     if _DEGENERATE in families and len(families) > 1:
@@ -103,6 +114,15 @@ def _graphs(draw: Any, families: Sequence[str], min_vertices: int, max_vertices:
         assert scaled is not None
         return scaled
     return g
+
+
+def _name(value: Any, names: Sequence[str]) -> Optional[str]:
+    """The name in names that value is (compared as a plain str: a subclass's __eq__ is not asked), or None."""
+    if issubclass(type(value), str):  # not isinstance(), which asks __class__
+        for name in names:
+            if str.__eq__(value, name):
+                return name
+    return None
 
 
 def _subgraph(g: Graph, keep_vertex: Sequence[bool], keep_edge: Sequence[bool]) -> Graph:
@@ -163,8 +183,8 @@ def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None, **con
     (in $DCEL_SVG_DIR, or dcel-failures/ in the temporary directory).
     """
     __tracebackhide__ = True  # pytest shows the caller's line, not this function's body
-    reference = graph if isinstance(graph, _dcel.Dcel) else _dcel.build(graph)
-    if kind is None and isinstance(answer, (list, tuple)):
+    reference = graph if _is_dcel(graph) else _dcel.build(graph)
+    if kind is None and issubclass(type(answer), (list, tuple)):
         kind = "faces"  # what this assertion is named for; dcel.check would detect it and say so
     report = check(reference, answer, kind=kind, **conventions)
     if report.agrees:
@@ -199,7 +219,9 @@ def assert_same_faces(graph: Any, answer: Any, kind: Optional[str] = None, **con
 
 
 def _answer_json(answer: Any) -> str:
+    """The answer as JSON, written as check() writes it (from snapshots, to any depth), or its short repr
+    when it cannot be (its own code raises, or it holds what JSON cannot)."""
     try:
-        return json.dumps(answer, default=lambda v: v.tolist() if hasattr(v, "tolist") else repr(v))
-    except (TypeError, ValueError):
-        return repr(answer)
+        return _json_cut(answer, None)
+    except Exception:
+        return _shown(answer)

@@ -12,6 +12,7 @@
 #include "dcel/dump.hpp"
 #include "dcel/edit.hpp"
 #include "dcel/error.hpp"
+#include "dcel/format.hpp"
 #include "dcel/io/dcel_json.hpp"
 #include "dcel/io/graph_json.hpp"
 #include "dcel/io/svg.hpp"
@@ -56,7 +57,7 @@ py::object location(const Location& l) {
 }
 
 py::list pieces(const std::vector<StabPiece>& v) {
-    const py::object piece = value_type("StabPiece");
+    const py::handle piece = value_type("StabPiece");
     py::list out;
     for (const StabPiece& p : v) {
         switch (p.kind) {
@@ -108,7 +109,7 @@ py::list cycles_to_python(const std::vector<std::vector<VertexId>>& cycles) {
     return out;
 }
 
-Dcel build_released(PlanarGraph g, bool check_crossings) {
+Dcel build_released(const PlanarGraph& g, bool check_crossings) {
     const py::gil_scoped_release unlocked;
     return build(g, BuildOptions{check_crossings});
 }
@@ -117,14 +118,55 @@ PlanarGraph graph_argument(const py::object& vertices, const py::object& edges) 
     return edges.is_none() ? graph_from(vertices) : graph_from(vertices, edges);
 }
 
-HalfEdgeId half_edge_arg(const Dcel& d, std::int64_t h, const char* what) {
-    return HalfEdgeId(id_below(h, d.num_half_edges(), what));
+// An id argument of s: its __index__ first (Python code, which may even edit
+// s), then the check against s as it is then.
+HalfEdgeId half_edge_arg(const DcelObject& s, const IntArg& h, const char* what) {
+    const py::object id = id_value(h, what);
+    return HalfEdgeId(id_below(id, s.get()->num_half_edges(), what));
 }
-FaceId face_arg(const Dcel& d, std::int64_t f, const char* what) { return FaceId(id_below(f, d.num_faces(), what)); }
-VertexId vertex_arg(const Dcel& d, std::int64_t v, const char* what) {
-    return VertexId(id_below(v, d.num_vertices(), what));
+FaceId face_arg(const DcelObject& s, const IntArg& f, const char* what) {
+    const py::object id = id_value(f, what);
+    return FaceId(id_below(id, s.get()->num_faces(), what));
 }
-EdgeId edge_arg(const Dcel& d, std::int64_t e, const char* what) { return EdgeId(id_below(e, d.num_edges(), what)); }
+VertexId vertex_arg(const DcelObject& s, const IntArg& v, const char* what) {
+    const py::object id = id_value(v, what);
+    return VertexId(id_below(id, s.get()->num_vertices(), what));
+}
+EdgeId edge_arg(const DcelObject& s, const IntArg& e, const char* what) {
+    const py::object id = id_value(e, what);
+    return EdgeId(id_below(id, s.get()->num_edges(), what));
+}
+
+// A query of s with one id argument: the id converted first, then the query
+// run on the state, held while its answer is made into Python values.
+template <class Id, class Query>
+py::object query(const DcelObject& s, Id id, Query q) {
+    const std::shared_ptr<const Dcel> held = s.get();
+    return q(*held, id);
+}
+
+// locate() of each point, with the GIL released: the locator is held (an
+// edit made meanwhile by another thread builds a new one).
+py::list locate_all(DcelObject& s, const py::object& points) {
+    constexpr const char* what = "locate_many: points";
+    const std::vector<Point> all = points_from(points, what);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        if (!std::isfinite(all[i].x) || !std::isfinite(all[i].y)) {
+            throw InvalidInput(InputErrorKind::BadCoordinate, std::string(what) + "[" + std::to_string(i) +
+                                                                  "]: coordinates must be finite, found " +
+                                                                  format_point(all[i]));
+        }
+    }
+    const std::shared_ptr<const PointLocator> locator = s.locator();  // after the points: their code may edit s
+    std::vector<Location> found(all.size());
+    {
+        const py::gil_scoped_release unlocked;
+        for (std::size_t i = 0; i < found.size(); ++i) found[i] = locator->locate(all[i]);
+    }
+    py::list out(found.size());
+    for (std::size_t i = 0; i < found.size(); ++i) out[i] = location(found[i]);
+    return out;
+}
 
 constexpr const char* kDcelDoc = R"doc(The DCEL of a planar straight-line graph, as build() makes it.
 
@@ -143,179 +185,193 @@ never changes: an edit made while views exist works on a copy.)doc";
 void bind_dcel(py::module_& m) {
     py::class_<DcelObject> cls(m, "Dcel", kDcelDoc);
     cls.attr("__module__") = "dcel";  // shown as dcel.Dcel
-    cls.def_property_readonly("num_vertices", [](const DcelObject& s) { return s.get().num_vertices(); })
-        .def_property_readonly("num_edges", [](const DcelObject& s) { return s.get().num_edges(); })
-        .def_property_readonly("num_half_edges", [](const DcelObject& s) { return s.get().num_half_edges(); })
-        .def_property_readonly("num_faces", [](const DcelObject& s) { return s.get().num_faces(); })
+    cls.def_property_readonly("num_vertices", [](const DcelObject& s) { return s.get()->num_vertices(); })
+        .def_property_readonly("num_edges", [](const DcelObject& s) { return s.get()->num_edges(); })
+        .def_property_readonly("num_half_edges", [](const DcelObject& s) { return s.get()->num_half_edges(); })
+        .def_property_readonly("num_faces", [](const DcelObject& s) { return s.get()->num_faces(); })
         .def_property_readonly(
-            "points", [](const DcelObject& s) { return s.view<double>(s.get().points().data(), s.get().num_vertices(), 2); },
+            "points",
+            [](const DcelObject& s) {
+                const auto d = s.get();
+                return DcelObject::view<double>(d, d->points().data(), d->num_vertices(), 2);
+            },
             "(V, 2) float64: the coordinates of each vertex, as given.")
         .def_property_readonly(
             "origin",
-            [](const DcelObject& s) { return s.view<std::uint32_t>(s.get().origins().data(), s.get().num_half_edges()); },
+            [](const DcelObject& s) {
+                const auto d = s.get();
+                return DcelObject::view<std::uint32_t>(d, d->origins().data(), d->num_half_edges());
+            },
             "(H,) uint32: origin[h], the vertex h leaves.")
         .def_property_readonly(
             "next",
-            [](const DcelObject& s) { return s.view<std::uint32_t>(s.get().next_links().data(), s.get().num_half_edges()); },
+            [](const DcelObject& s) {
+                const auto d = s.get();
+                return DcelObject::view<std::uint32_t>(d, d->next_links().data(), d->num_half_edges());
+            },
             "(H,) uint32: next[h], the half-edge after h on its face's boundary.")
         .def_property_readonly(
             "prev",
-            [](const DcelObject& s) { return s.view<std::uint32_t>(s.get().prev_links().data(), s.get().num_half_edges()); },
+            [](const DcelObject& s) {
+                const auto d = s.get();
+                return DcelObject::view<std::uint32_t>(d, d->prev_links().data(), d->num_half_edges());
+            },
             "(H,) uint32: prev[h], the inverse permutation of next.")
         .def_property_readonly(
             "face",
-            [](const DcelObject& s) { return s.view<std::uint32_t>(s.get().left_faces().data(), s.get().num_half_edges()); },
+            [](const DcelObject& s) {
+                const auto d = s.get();
+                return DcelObject::view<std::uint32_t>(d, d->left_faces().data(), d->num_half_edges());
+            },
             "(H,) uint32: face[h], the face on the left of h.")
         .def_property_readonly(
             "out",
-            [](const DcelObject& s) { return s.view<std::uint32_t>(s.get().out_links().data(), s.get().num_vertices()); },
+            [](const DcelObject& s) {
+                const auto d = s.get();
+                return DcelObject::view<std::uint32_t>(d, d->out_links().data(), d->num_vertices());
+            },
             "(V,) uint32: one half-edge leaving each vertex, NULL for an isolated vertex.")
         .def_property_readonly(
             "twin",
             [](const DcelObject& s) {
-                return computed(s.get().num_half_edges(), [](std::size_t h) { return static_cast<std::uint32_t>(h ^ 1U); });
+                return computed(s.get()->num_half_edges(), [](std::size_t h) { return static_cast<std::uint32_t>(h ^ 1U); });
             },
             "(H,) uint32: twin[h] = h ^ 1 (computed).")
         .def_property_readonly(
             "target",
             [](const DcelObject& s) {
-                const auto& origin = s.get().origins();
+                const auto d = s.get();
+                const auto& origin = d->origins();
                 return computed(origin.size(), [&](std::size_t h) { return origin[h ^ 1U].index(); });
             },
             "(H,) uint32: target[h] = origin[h ^ 1] (computed).")
         .def_property_readonly(
             "outer",
             [](const DcelObject& s) {
-                const Dcel& d = s.get();
-                return computed(d.num_faces(),
-                                [&](std::size_t f) { return d.outer(FaceId(static_cast<Index>(f))).index(); });
+                const auto d = s.get();
+                return computed(d->num_faces(),
+                                [&](std::size_t f) { return d->outer(FaceId(static_cast<Index>(f))).index(); });
             },
             "(F,) uint32: one half-edge of each face's outer cycle, NULL for the unbounded face 0 (computed).")
         .def_property_readonly(
             "faces",
             [](const DcelObject& s) {
-                const Dcel& d = s.get();
-                py::list out(d.num_faces());
-                for (Index f = 0; f < d.num_faces(); ++f) out[f] = face_record(d, FaceId(f));
+                const auto d = s.get();
+                py::list out(d->num_faces());
+                for (Index f = 0; f < d->num_faces(); ++f) out[f] = face_record(*d, FaceId(f));
                 return out;
             },
             "Every face record: Face(id, outer, holes, isolated), face 0 first (outer None).")
         .def(
             "cycle",
-            [](const DcelObject& s, std::int64_t h) {
-                const Dcel& d = s.get();
-                py::list out;
-                for (const HalfEdgeId x : d.cycle(half_edge_arg(d, h, "cycle: half-edge"))) out.append(x.index());
-                return out;
+            [](const DcelObject& s, const IntArg& h) {
+                return query(s, half_edge_arg(s, h, "cycle: half-edge"), [](const Dcel& d, HalfEdgeId x) {
+                    py::list out;
+                    for (const HalfEdgeId y : d.cycle(x)) out.append(y.index());
+                    return out;
+                });
             },
             py::arg("h"), "The half-edges of the boundary cycle through h, in next order, from h.")
         .def(
             "cycle_vertices",
-            [](const DcelObject& s, std::int64_t h) {
-                const Dcel& d = s.get();
-                py::list out;
-                for (const HalfEdgeId x : d.cycle(half_edge_arg(d, h, "cycle_vertices: half-edge")))
-                    out.append(d.origin(x).index());
-                return out;
+            [](const DcelObject& s, const IntArg& h) {
+                return query(s, half_edge_arg(s, h, "cycle_vertices: half-edge"), [](const Dcel& d, HalfEdgeId x) {
+                    py::list out;
+                    for (const HalfEdgeId y : d.cycle(x)) out.append(d.origin(y).index());
+                    return out;
+                });
             },
             py::arg("h"), "The origins of the half-edges of the cycle through h: the cycle as `dcel faces` lists it.")
         .def(
             "around",
-            [](const DcelObject& s, std::int64_t v) {
-                const Dcel& d = s.get();
-                py::list out;
-                for (const HalfEdgeId x : d.around_origin_cw(d.out(vertex_arg(d, v, "around: vertex"))))
-                    out.append(x.index());
-                return out;
+            [](const DcelObject& s, const IntArg& v) {
+                return query(s, vertex_arg(s, v, "around: vertex"), [](const Dcel& d, VertexId x) {
+                    py::list out;
+                    for (const HalfEdgeId y : d.around_origin_cw(d.out(x))) out.append(y.index());
+                    return out;
+                });
             },
             py::arg("v"), "The half-edges leaving v in clockwise order, from out[v]; [] for an isolated vertex.")
         .def(
-            "boundary_cycles", [](const DcelObject& s) { return cycles_to_python(boundary_cycles(s.get())); },
+            "boundary_cycles", [](const DcelObject& s) { return cycles_to_python(boundary_cycles(*s.get())); },
             "Every boundary cycle as its origin vertices in next order, from its smallest half-edge; the `dcel faces` "
             "answer.")
         .def(
             "face_area",
-            [](const DcelObject& s, std::int64_t f) {
-                return area(face_area(s.get(), face_arg(s.get(), f, "face_area: face")));
+            [](const DcelObject& s, const IntArg& f) {
+                return query(s, face_arg(s, f, "face_area: face"),
+                             [](const Dcel& d, FaceId x) { return area(face_area(d, x)); });
             },
             py::arg("f"),
             "Area(value, sign) of face f: its outer cycle's area minus its holes'. Face 0: (inf, 1). The sign is exact.")
         .def(
             "cycle_area",
-            [](const DcelObject& s, std::int64_t h) {
-                return area(cycle_area(s.get(), half_edge_arg(s.get(), h, "cycle_area: half-edge")));
+            [](const DcelObject& s, const IntArg& h) {
+                return query(s, half_edge_arg(s, h, "cycle_area: half-edge"),
+                             [](const Dcel& d, HalfEdgeId x) { return area(cycle_area(d, x)); });
             },
             py::arg("h"), "Area(value, sign) of the cycle through h, counterclockwise positive. The sign is exact.")
         .def(
             "neighbours",
-            [](const DcelObject& s, std::int64_t f) {
-                return ids_to_python(neighbours(s.get(), face_arg(s.get(), f, "neighbours: face")));
+            [](const DcelObject& s, const IntArg& f) {
+                return query(s, face_arg(s, f, "neighbours: face"),
+                             [](const Dcel& d, FaceId x) { return ids_to_python(neighbours(d, x)); });
             },
             py::arg("f"), "The faces across the edges of f's cycles, each once, sorted, f itself excluded.")
         .def(
             "faces_around",
-            [](const DcelObject& s, std::int64_t v) {
-                return ids_to_python(faces_around(s.get(), vertex_arg(s.get(), v, "faces_around: vertex")));
+            [](const DcelObject& s, const IntArg& v) {
+                return query(s, vertex_arg(s, v, "faces_around: vertex"),
+                             [](const Dcel& d, VertexId x) { return ids_to_python(faces_around(d, x)); });
             },
             py::arg("v"),
             "The faces met walking counterclockwise around v (one per wedge); for an isolated vertex, its face.")
         .def(
-            "count_components", [](const DcelObject& s) { return count_components(s.get()); },
+            "count_components", [](const DcelObject& s) { return count_components(*s.get()); },
             "The number of connected components, isolated vertices included.")
         .def(
             "locate",
-            [](DcelObject& s, const py::object& p) { return location(s.locator().locate(point_from(p, "locate: point"))); },
+            [](DcelObject& s, const py::object& p) {
+                const Point at = point_from(p, "locate: point");  // first: its code may edit s
+                return location(s.locator()->locate(at));
+            },
             py::arg("point"),
             "Location(kind, id) of the point (x, y): kind \"vertex\", \"edge\" (inside it) or \"face\" (inside it). Exact.\n"
             "The first call builds a point locator (O(E log E) expected); later calls take O(log E) expected.")
-        .def(
-            "locate_many",
-            [](DcelObject& s, const py::object& points) {
-                const PlanarGraph g = graph_from(points, py::list());
-                const PointLocator& locator = s.locator();
-                std::vector<Location> found(g.vertices.size());
-                for (const Point p : g.vertices) {
-                    if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-                        throw InvalidInput(InputErrorKind::BadCoordinate, "locate_many: coordinates must be finite");
-                    }
-                }
-                {
-                    const py::gil_scoped_release unlocked;
-                    for (std::size_t i = 0; i < found.size(); ++i) found[i] = locator.locate(g.vertices[i]);
-                }
-                py::list out(found.size());
-                for (std::size_t i = 0; i < found.size(); ++i) out[i] = location(found[i]);
-                return out;
-            },
-            py::arg("points"), "locate() of each point of an (n, 2) array or list of pairs.")
+        .def("locate_many", &locate_all, py::arg("points"), "locate() of each point of an (n, 2) array or list of pairs.")
         .def(
             "stab",
-            [](const DcelObject& s, const py::object& a, const py::object& b, bool line) {
+            [](const DcelObject& s, const py::object& a, const py::object& b, const FlagArg& line) {
                 const Point pa = point_from(a, "stab: a");
                 const Point pb = point_from(b, "stab: b");
-                return pieces(line ? stab_line(s.get(), pa, pb) : stab_segment(s.get(), pa, pb));
+                const bool whole_line = flag_from(line, "stab: line");
+                const auto d = s.get();
+                return pieces(whole_line ? stab_line(*d, pa, pb) : stab_segment(*d, pa, pb));
             },
             py::arg("a"), py::arg("b"), py::kw_only(), py::arg("line") = false,
             "Everything the segment from a to b meets, in order from a: StabPiece(kind, id, along) for each face\n"
             "stretch, edge crossed (along=True when running along it) and vertex passed. line=True: the whole line\n"
             "through a and b, from the unbounded face to the unbounded face.")
         .def(
-            "validate", [](const DcelObject& s) { return violations_to_python(validate_all(to_dump(s.get()))); },
+            "validate", [](const DcelObject& s) { return violations_to_python(validate_all(to_dump(*s.get()))); },
             "Every broken invariant (the first of each checker); [] for a DCEL built here.")
         .def(
             "split_edge",
-            [](DcelObject& s, std::int64_t e, const py::object& p) {
-                const EdgeId id = edge_arg(s.get(), e, "split_edge: edge");
+            [](DcelObject& s, const IntArg& e, const py::object& p) {
                 const Point at = point_from(p, "split_edge: point");
+                const EdgeId id = edge_arg(s, e, "split_edge: edge");
                 return edited([&] { return split_edge(s.for_edit(), id, at); }, {}, {id.index()});
             },
             py::arg("e"), py::arg("point"),
             "Splits edge e at point (exactly on e, strictly inside). The new vertex is V, the new edge E. Returns a Change.")
         .def(
             "add_edge",
-            [](DcelObject& s, std::int64_t u, std::int64_t v) {
-                const VertexId a = vertex_arg(s.get(), u, "add_edge: vertex");
-                const VertexId b = vertex_arg(s.get(), v, "add_edge: vertex");
+            [](DcelObject& s, const IntArg& u, const IntArg& v) {
+                constexpr const char* what = "add_edge: vertex";
+                const py::object ui = id_value(u, what);
+                const py::object vi = id_value(v, what);
+                const VertexId a(id_below(ui, s.get()->num_vertices(), what));
+                const VertexId b(id_below(vi, s.get()->num_vertices(), what));
                 return edited([&] { return add_edge(s.for_edit(), a, b); }, {a.index(), b.index()});
             },
             py::arg("u"), py::arg("v"),
@@ -323,9 +379,9 @@ void bind_dcel(py::module_& m) {
             "would cross, overlap or pass through anything. Returns a Change.")
         .def(
             "add_edge_to_point",
-            [](DcelObject& s, std::int64_t u, const py::object& p) {
-                const VertexId a = vertex_arg(s.get(), u, "add_edge_to_point: vertex");
+            [](DcelObject& s, const IntArg& u, const py::object& p) {
                 const Point at = point_from(p, "add_edge_to_point: point");
+                const VertexId a = vertex_arg(s, u, "add_edge_to_point: vertex");
                 return edited([&] { return add_edge_to_point(s.for_edit(), a, at); }, {a.index()});
             },
             py::arg("u"), py::arg("point"), "Adds a vertex at point and the edge from u to it. Returns a Change.")
@@ -338,67 +394,69 @@ void bind_dcel(py::module_& m) {
             py::arg("point"), "Adds an isolated vertex at point, listed in the face containing it. Returns a Change.")
         .def(
             "remove_edge",
-            [](DcelObject& s, std::int64_t e) {
-                const EdgeId id = edge_arg(s.get(), e, "remove_edge: edge");
+            [](DcelObject& s, const IntArg& e) {
+                const EdgeId id = edge_arg(s, e, "remove_edge: edge");
                 return edited([&] { return remove_edge(s.for_edit(), id); }, {}, {id.index()});
             },
             py::arg("e"), "Removes edge e; the last edge moves into its id. Returns a Change.")
         .def(
             "remove_isolated_vertex",
-            [](DcelObject& s, std::int64_t v) {
-                const VertexId id = vertex_arg(s.get(), v, "remove_isolated_vertex: vertex");
+            [](DcelObject& s, const IntArg& v) {
+                const VertexId id = vertex_arg(s, v, "remove_isolated_vertex: vertex");
                 return edited([&] { return remove_isolated_vertex(s.for_edit(), id); }, {id.index()});
             },
             py::arg("v"), "Removes v, which has no edges; the last vertex moves into its id. Returns a Change.")
         .def(
             "merge_collinear_edges",
-            [](DcelObject& s, std::int64_t v) {
-                const VertexId id = vertex_arg(s.get(), v, "merge_collinear_edges: vertex");
+            [](DcelObject& s, const IntArg& v) {
+                const VertexId id = vertex_arg(s, v, "merge_collinear_edges: vertex");
                 return edited([&] { return merge_collinear_edges(s.for_edit(), id); }, {id.index()});
             },
             py::arg("v"),
             "Removes v, which has exactly two edges a-v-b with v strictly inside a-b: the inverse of split_edge.")
         .def(
-            "graph", [](const DcelObject& s) { return graph_as_arrays(to_graph(s.get())); },
+            "graph", [](const DcelObject& s) { return graph_as_arrays(to_graph(*s.get())); },
             "The graph under this DCEL as Graph(vertices, edges) of numpy arrays: build() of it gives this DCEL again\n"
             "(up to face numbering). How an edited DCEL is saved.")
         .def(
             "to_json",
-            [](const DcelObject& s, bool compact) {
-                return io::write_dump(to_dump(s.get()), compact ? io::DumpStyle::Compact : io::DumpStyle::Lines);
+            [](const DcelObject& s, const FlagArg& compact) {
+                const bool one_line = flag_from(compact, "to_json: compact");
+                return io::write_dump(to_dump(*s.get()), one_line ? io::DumpStyle::Compact : io::DumpStyle::Lines);
             },
             py::kw_only(), py::arg("compact") = false, "The dump that `dcel build` prints (docs/formats.md).")
         .def(
             "to_dump",
             [](const DcelObject& s) {
-                return py::module_::import("json").attr("loads")(io::write_dump(to_dump(s.get()), io::DumpStyle::Compact));
+                return imported().json_loads(io::write_dump(to_dump(*s.get()), io::DumpStyle::Compact));
             },
             "The dump as a dict of lists: vertices, vertex_out, half_edges, faces (the `dcel build` format).")
         .def(
             "svg",
-            [](const DcelObject& s, const std::string& title, const std::vector<std::vector<Index>>& highlight) {
+            [](const DcelObject& s, const TextArg& title, const CyclesArg& highlight) {
                 io::SvgOptions options;
-                options.title = title;
-                options.highlight_cycles = highlight;
-                return io::render_svg(s.get(), options);
+                options.title = text_from(title, "svg: title");
+                options.highlight_cycles = cycles_from(highlight, "svg: highlight");
+                return io::render_svg(*s.get(), options);
             },
-            py::kw_only(), py::arg("title") = "", py::arg("highlight") = std::vector<std::vector<Index>>{},
+            py::kw_only(), py::arg("title") = "", py::arg("highlight") = py::list(),
             "An SVG picture (faces tinted, half-edges as arrows, vertex ids); highlight: vertex cycles drawn in red.")
         .def(
-            "copy", [](const DcelObject& s) { return DcelObject(s.get()); }, "An independent copy.")
-        .def("__copy__", [](const DcelObject& s) { return DcelObject(s.get()); })
+            "copy", [](const DcelObject& s) { return DcelObject(*s.get()); }, "An independent copy.")
+        .def("__copy__", [](const DcelObject& s) { return DcelObject(*s.get()); })
         .def(
-            "__deepcopy__", [](const DcelObject& s, const py::object&) { return DcelObject(s.get()); }, py::arg("memo"))
+            "__deepcopy__", [](const DcelObject& s, const py::object&) { return DcelObject(*s.get()); }, py::arg("memo"))
         .def("__repr__", [](const DcelObject& s) {
-            const Dcel& d = s.get();
-            return "<dcel.Dcel: " + std::to_string(d.num_vertices()) + " vertices, " + std::to_string(d.num_edges()) +
-                   " edges, " + std::to_string(d.num_faces()) + " faces>";
+            const auto d = s.get();
+            return "<dcel.Dcel: " + std::to_string(d->num_vertices()) + " vertices, " + std::to_string(d->num_edges()) +
+                   " edges, " + std::to_string(d->num_faces()) + " faces>";
         });
 
     m.def(
         "build",
-        [](const py::object& vertices, const py::object& edges, bool check_crossings) {
-            return DcelObject(build_released(graph_argument(vertices, edges), check_crossings));
+        [](const py::object& vertices, const py::object& edges, const FlagArg& check_crossings) {
+            const bool check = flag_from(check_crossings, "build: check_crossings");
+            return DcelObject(build_released(graph_argument(vertices, edges), check));
         },
         py::arg("vertices"), py::arg("edges") = py::none(), py::kw_only(), py::arg("check_crossings") = true,
         R"doc(The DCEL of a planar straight-line graph.
@@ -419,17 +477,19 @@ are none). O((V + E) log(V + E)).)doc");
         py::arg("vertices"), py::arg("edges") = py::none(),
         "Every boundary cycle of the graph as vertex ids in next order: what `dcel faces` prints.");
     m.def(
-        "read_graph", [](const std::string& text) { return graph_as_arrays(io::read_graph(text)); }, py::arg("text"),
+        "read_graph", [](const TextArg& text) { return graph_as_arrays(io::read_graph(text_from(text, ""))); },
+        py::arg("text"),
         "The graph in JSON text (`dcel faces` input: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]} or the\n"
         "positional form), read as the CLI reads it (coordinates correctly rounded), as Graph(vertices, edges) of\n"
         "numpy arrays. InvalidInput names the place of a syntax or shape error (line and column, or a JSON path).");
     m.def(
         "_build_seconds",
-        [](const py::object& vertices, const py::object& edges, int repeat) {
+        [](const py::object& vertices, const py::object& edges, const IntArg& repeat_arg) {
             // For measuring the binding's overhead (python/bench): the C++
             // call alone on a graph converted once, in thread CPU seconds
             // (what time.thread_time() counts on the Python side).
             const PlanarGraph g = graph_from(vertices, edges);
+            const std::size_t repeat = count_from(repeat_arg, 1000, "_build_seconds: repeat");
             std::vector<double> seconds;
             const py::gil_scoped_release unlocked;
             const auto now = [] {
@@ -437,7 +497,7 @@ are none). O((V + E) log(V + E)).)doc");
                 clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
                 return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
             };
-            for (int i = 0; i < repeat; ++i) {
+            for (std::size_t i = 0; i < repeat; ++i) {
                 const double start = now();
                 const Dcel d = build(g);
                 seconds.push_back(now() - start);

@@ -16,27 +16,38 @@ class DcelObject {
 public:
     explicit DcelObject(Dcel d) : state_(std::make_shared<Dcel>(std::move(d))) {}
 
-    [[nodiscard]] const Dcel& get() const { return *state_; }
+    // The state, for the caller to hold for the whole of a call that reads
+    // it: Python code may run in the middle of such a call (an argument's
+    // __index__, a value type's constructor, a finaliser the collector runs
+    // on an allocation, another thread while the GIL is released) and edit
+    // this Dcel. Held, the state is copied by that edit (copy on write,
+    // below) rather than changed or freed under the call.
+    [[nodiscard]] std::shared_ptr<const Dcel> get() const { return state_; }
 
     // The DCEL an edit may change: copied first while numpy views of this
-    // state are alive (they hold the other references).
+    // state or calls in progress hold it (they hold the other references).
+    // Nothing may hold get() across this call, which would force the copy.
     Dcel& for_edit() {
         if (state_.use_count() > 1) state_ = std::make_shared<Dcel>(*state_);
         locator_.reset();  // a snapshot of the old geometry
         return *state_;
     }
 
-    // Built on the first locate() after build or the last edit.
-    const PointLocator& locator() {
-        if (!locator_) locator_ = std::make_unique<PointLocator>(*state_);
-        return *locator_;
+    // Built on the first locate() after build or the last edit. Shared for
+    // the same reason as get(): an edit drops this object's reference, not
+    // the locator a call that released the GIL is using.
+    std::shared_ptr<const PointLocator> locator() {
+        if (!locator_) locator_ = std::make_shared<const PointLocator>(*state_);
+        return locator_;
     }
 
     // A read-only array of `count` elements of T (rows of `columns` when
-    // columns > 0) at `data`, which lies inside this state.
+    // columns > 0) at `data`, which lies inside `state` (this object's, as
+    // get() gave it): the array keeps that state alive.
     template <class T>
-    [[nodiscard]] py::array view(const void* data, std::size_t count, py::ssize_t columns = 0) const {
-        auto* keep = new std::shared_ptr<const Dcel>(state_);
+    [[nodiscard]] static py::array view(const std::shared_ptr<const Dcel>& state, const void* data, std::size_t count,
+                                        py::ssize_t columns = 0) {
+        auto* keep = new std::shared_ptr<const Dcel>(state);
         const py::capsule base(keep, [](void* p) { delete static_cast<std::shared_ptr<const Dcel>*>(p); });
         const auto n = static_cast<py::ssize_t>(count);
         const auto size = static_cast<py::ssize_t>(sizeof(T));
@@ -48,7 +59,7 @@ public:
 
 private:
     std::shared_ptr<Dcel> state_;
-    std::unique_ptr<PointLocator> locator_;
+    std::shared_ptr<const PointLocator> locator_;
 };
 
 }  // namespace dcel::python

@@ -16,7 +16,7 @@ py::list indexes(const std::vector<Id>& ids) {
     return out;
 }
 
-void raise(const py::object& cls, const py::object& instance) { PyErr_SetObject(cls.ptr(), instance.ptr()); }
+void raise(py::handle cls, const py::object& instance) { PyErr_SetObject(cls.ptr(), instance.ptr()); }
 
 }  // namespace
 
@@ -25,14 +25,14 @@ void register_errors(py::module_& /*m*/) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const InvalidInput& e) {
-            const py::object cls = value_type("InvalidInput");
-            raise(cls, cls(e.what(), to_string(e.kind()), indexes(e.vertices()), indexes(e.edges())));
+            const py::handle cls = value_type("InvalidInput");
+            raise(cls, cls(message_str(e.what()), to_string(e.kind()), indexes(e.vertices()), indexes(e.edges())));
         } catch (const TopologyError& e) {
-            const py::object cls = value_type("TopologyError");
-            raise(cls, cls(e.what()));
+            const py::handle cls = value_type("TopologyError");
+            raise(cls, cls(message_str(e.what())));
         } catch (const EditRefused& e) {
-            const py::object cls = value_type("TopologyError");
-            raise(cls, cls(e.message, py::cast(e.vertices), py::cast(e.edges)));
+            const py::handle cls = value_type("TopologyError");
+            raise(cls, cls(message_str(e.message), py::cast(e.vertices), py::cast(e.edges)));
         }
     });
 }

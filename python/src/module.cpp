@@ -6,6 +6,8 @@
 PYBIND11_MODULE(_dcel, m) {
     m.doc() = "The exact reference DCEL of planar straight-line graphs (the C++ library dcel, bound).";
     m.attr("NULL") = dcel::kNoIndex;
+    // First: nothing may be looked up lazily later (imports.cpp says why).
+    dcel::python::prepare_imports();
     dcel::python::register_errors(m);
     dcel::python::bind_dcel(m);
     dcel::python::bind_check(m);
