@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "dcel/check/compare.hpp"
@@ -58,32 +59,52 @@ inline std::vector<Index> next_array(const Dcel& d) {
     return next;
 }
 
-// Shuffles the cycles and rotates each: the same answer in other words.
-inline FacesAnswer shuffled(FacesAnswer a, std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
-    for (auto& c : a) {
-        if (!c.empty()) std::rotate(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(rng() % c.size()), c.end());
+// The same answer in other words: each cycle rotated to start turns[k]
+// places on (k its old position), then the cycles reordered (new position i
+// holds old cycle order[i]).
+inline FacesAnswer shuffled(const FacesAnswer& a, const std::vector<Index>& order, const std::vector<std::size_t>& turns) {
+    FacesAnswer out;
+    out.reserve(a.size());
+    for (const Index k : order) {
+        std::vector<Index> c = a[k];
+        if (!c.empty()) std::rotate(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(turns[k] % c.size()), c.end());
+        out.push_back(std::move(c));
     }
-    std::shuffle(a.begin(), a.end(), rng);
-    return a;
+    return out;
 }
 
-// The same DCEL with half-edges and faces renumbered at random, record lists
-// shuffled, and each face record naming another half-edge of its cycles:
-// equal to the original modulo numbering.
-inline DcelDump renumbered(const DcelDump& d, std::uint64_t seed) {
+// The same, with the rotations and the order drawn from a seed.
+inline FacesAnswer shuffled(const FacesAnswer& a, std::uint64_t seed) {
     std::mt19937_64 rng(seed);
+    std::vector<std::size_t> turns(a.size(), 0);
+    for (std::size_t k = 0; k < a.size(); ++k) {
+        if (!a[k].empty()) turns[k] = static_cast<std::size_t>(rng() % a[k].size());
+    }
+    std::vector<Index> order(a.size());
+    std::iota(order.begin(), order.end(), Index{0});
+    std::shuffle(order.begin(), order.end(), rng);
+    return shuffled(a, order, turns);
+}
+
+// How renumbered() rewrites a dump: old half-edge h becomes half_edges[h]
+// and old face f becomes faces[f]; face f's k-th boundary half-edge (its
+// outer one first, when it has one, then its inner ones) moves steps[f][k]
+// places along next, to another half-edge of the same cycle; and its inner
+// and isolated lists are reordered (new position i holds old entry
+// inner_order[f][i], isolated_order[f][i]).
+struct DumpRenumbering {
+    std::vector<Index> half_edges, faces;
+    std::vector<std::vector<unsigned>> steps;
+    std::vector<std::vector<Index>> inner_order, isolated_order;
+};
+
+// The same DCEL renumbered as r says: equal to the original modulo numbering.
+inline DcelDump renumbered(const DcelDump& d, const DumpRenumbering& r) {
     const auto halves = static_cast<Index>(d.half_edges.size());
     const auto faces = static_cast<Index>(d.faces.size());
-    std::vector<Index> ph(halves), pf(faces);
-    std::iota(ph.begin(), ph.end(), Index{0});
-    std::iota(pf.begin(), pf.end(), Index{0});
-    std::shuffle(ph.begin(), ph.end(), rng);
-    std::shuffle(pf.begin(), pf.end(), rng);
-    auto h_of = [&](HalfEdgeId h) { return h.is_null() ? h : HalfEdgeId(ph[h.index()]); };
-    // Another half-edge on the cycle through h, a few steps along next.
-    auto elsewhere = [&](HalfEdgeId h) {
-        for (auto k = rng() % 4; k > 0; --k) h = d.half_edges[h.index()].next;
+    auto h_of = [&](HalfEdgeId h) { return h.is_null() ? h : HalfEdgeId(r.half_edges[h.index()]); };
+    auto along = [&](HalfEdgeId h, unsigned steps) {
+        for (; steps > 0; --steps) h = d.half_edges[h.index()].next;
         return h;
     };
     DcelDump out;
@@ -91,20 +112,43 @@ inline DcelDump renumbered(const DcelDump& d, std::uint64_t seed) {
     for (const HalfEdgeId h : d.vertex_out) out.vertex_out.push_back(h_of(h));
     out.half_edges.resize(halves);
     for (Index h = 0; h < halves; ++h) {
-        const HalfEdgeRecord& r = d.half_edges[h];
-        out.half_edges[ph[h]] = {r.origin, h_of(r.twin), h_of(r.next), h_of(r.prev), FaceId(pf[r.face.index()])};
+        const HalfEdgeRecord& e = d.half_edges[h];
+        out.half_edges[r.half_edges[h]] = {e.origin, h_of(e.twin), h_of(e.next), h_of(e.prev), FaceId(r.faces[e.face.index()])};
     }
     out.faces.resize(faces);
     for (Index f = 0; f < faces; ++f) {
-        const FaceDump& r = d.faces[f];
-        FaceDump& n = out.faces[pf[f]];
-        n.outer = r.outer.is_null() ? r.outer : h_of(elsewhere(r.outer));
-        for (const HalfEdgeId h : r.inner) n.inner.push_back(h_of(elsewhere(h)));
-        n.isolated = r.isolated;
-        std::shuffle(n.inner.begin(), n.inner.end(), rng);
-        std::shuffle(n.isolated.begin(), n.isolated.end(), rng);
+        const FaceDump& old = d.faces[f];
+        FaceDump& n = out.faces[r.faces[f]];
+        std::size_t k = 0;
+        n.outer = old.outer.is_null() ? old.outer : h_of(along(old.outer, r.steps[f][k++]));
+        for (const Index i : r.inner_order[f]) n.inner.push_back(h_of(along(old.inner[i], r.steps[f][k + i])));
+        for (const Index i : r.isolated_order[f]) n.isolated.push_back(old.isolated[i]);
     }
     return out;
+}
+
+// A renumbering drawn from a seed: half-edges and faces renumbered at
+// random, record lists shuffled, and each face record naming a half-edge up
+// to three steps further along its cycles.
+inline DcelDump renumbered(const DcelDump& d, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    DumpRenumbering r;
+    auto shuffled_ids = [&](std::size_t n) {
+        std::vector<Index> p(n);
+        std::iota(p.begin(), p.end(), Index{0});
+        std::shuffle(p.begin(), p.end(), rng);
+        return p;
+    };
+    r.half_edges = shuffled_ids(d.half_edges.size());
+    r.faces = shuffled_ids(d.faces.size());
+    for (const FaceDump& f : d.faces) {
+        std::vector<unsigned>& steps = r.steps.emplace_back();
+        if (!f.outer.is_null()) steps.push_back(static_cast<unsigned>(rng() % 4));
+        for (std::size_t i = 0; i < f.inner.size(); ++i) steps.push_back(static_cast<unsigned>(rng() % 4));
+        r.inner_order.push_back(shuffled_ids(f.inner.size()));
+        r.isolated_order.push_back(shuffled_ids(f.isolated.size()));
+    }
+    return renumbered(d, r);
 }
 
 // The dump's half-edge u->v, or null.
