@@ -301,17 +301,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     c);
         return 0;
     }
-    testing::Choices choices(body);
-    testing::TrialSetup setup;
+    test_support::Choices choices(body);
+    test_support::TrialSetup setup;
     setup.corrupt = choices.one_in(2);
     setup.kind = kind ? *kind : static_cast<check::AnswerKind>(choices.below(4));
     setup.give_kind = kind.has_value();
     setup.conventions = c;
-    const testing::Trial trial = testing::make_trial(reference, meaning, setup, choices);
+    const test_support::Trial trial = test_support::make_trial(reference, meaning, setup, choices);
     FUZZ_CHECK(setup.corrupt || trial.expected.right, "the reference's own answer, respelled, is wrong by the oracle: "
                                                           << trial.expected.why << "\ntext: " << trial.text << "\n"
                                                           << trial.story);
-    const std::string failure = testing::judge_trial(reference, trial);
+    const std::string failure = test_support::judge_trial(reference, trial);
     FUZZ_CHECK(failure.empty(), failure);
     // The reference's answer as `dcel faces --answer KIND` prints it, plainly.
     const std::string own = check::reference_answer(reference, setup.kind);

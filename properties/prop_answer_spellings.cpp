@@ -19,14 +19,14 @@
 namespace dcel::props {
 namespace {
 
-using testing::Choices;
-using testing::Trial;
-using testing::TrialSetup;
+using test_support::Choices;
+using test_support::Trial;
+using test_support::TrialSetup;
 
 // Graphs of 0 to size + 3 vertices (a hundred at RapidCheck's largest
 // size): every shape the families make, and small enough that a case costs
 // about a millisecond.
-rc::Gen<check::GraphCase> small_graphs() { return check::graph_cases({.vertices_per_size = 3, .targeted = true}); }
+rc::Gen<testing::GraphCase> small_graphs() { return testing::graph_cases({.vertices_per_size = 3, .targeted = true}); }
 
 // RapidCheck scales its draws by the size, which starts at 0 (always the
 // first kind, no convention): every kind and convention from the first case.
@@ -53,11 +53,11 @@ Trial any_trial(const Dcel& d, const oracle::AnswerJudge& judge, bool corrupt) {
     const TrialSetup setup = any_setup(corrupt);
     const auto bytes = *rc::gen::container<std::vector<std::uint8_t>>(unscaled(rc::gen::arbitrary<std::uint8_t>()));
     Choices choices(bytes);
-    return testing::make_trial(d, judge, setup, choices);
+    return test_support::make_trial(d, judge, setup, choices);
 }
 
 RC_GTEST_PROP(AnswerSpellings, prop_answer_spellings_of_the_reference_agree, ()) {
-    const check::GraphCase c = *small_graphs();
+    const testing::GraphCase c = *small_graphs();
     const Dcel d = build(c.graph);
     const oracle::AnswerJudge judge(c.graph);
     const Trial t = any_trial(d, judge, false);
@@ -67,19 +67,19 @@ RC_GTEST_PROP(AnswerSpellings, prop_answer_spellings_of_the_reference_agree, ())
     // the respelling).
     RC_LOG() << "text: " << t.text << "\n" << t.story;
     RC_ASSERT(t.expected.right);
-    const std::string failure = testing::judge_trial(d, t);
+    const std::string failure = test_support::judge_trial(d, t);
     RC_LOG() << failure;
     RC_ASSERT(failure.empty());
 }
 
 RC_GTEST_PROP(AnswerSpellings, prop_answer_corruptions_differ_exactly_when_the_meaning_changes, ()) {
-    const check::GraphCase c = *small_graphs();
+    const testing::GraphCase c = *small_graphs();
     const Dcel d = build(c.graph);
     const oracle::AnswerJudge judge(c.graph);
     const Trial t = any_trial(d, judge, true);
     RC_CLASSIFY(true, check::answer_kind_name(t.setup.kind));
     RC_CLASSIFY(t.expected.right, "the corruption kept the meaning");
-    const std::string failure = testing::judge_trial(d, t);
+    const std::string failure = test_support::judge_trial(d, t);
     RC_LOG() << failure;
     RC_ASSERT(failure.empty());
 }

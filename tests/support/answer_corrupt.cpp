@@ -13,7 +13,7 @@
 
 #include "support/answer_steps.hpp"
 
-namespace dcel::testing::spell {
+namespace dcel::test_support::spell {
 namespace {
 
 HalfEdgeId any_half_edge(const DcelDump& d, Choices& c) {
@@ -362,4 +362,4 @@ void corrupt_dump(DcelDump& d, Choices& c, std::string& story) {
     d.faces.pop_back();
 }
 
-}  // namespace dcel::testing::spell
+}  // namespace dcel::test_support::spell

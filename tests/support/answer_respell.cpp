@@ -6,7 +6,7 @@
 
 #include "support/answer_steps.hpp"
 
-namespace dcel::testing::spell {
+namespace dcel::test_support::spell {
 namespace {
 
 // The direction a ring of this role runs in when faces are on the left:
@@ -185,4 +185,4 @@ void respell_dump(DcelDump& d, Choices& c, std::string& story) {
     }
 }
 
-}  // namespace dcel::testing::spell
+}  // namespace dcel::test_support::spell

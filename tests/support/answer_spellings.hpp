@@ -43,7 +43,7 @@
 #include "dcel/dcel.hpp"
 #include "oracles/answer_meaning.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 // Decisions read from bytes, one at a time. Every decision's 0 is the
 // plainest choice, and once the bytes run out every decision is 0, so
@@ -86,4 +86,4 @@ struct Trial {
 // difference, as in `dcel check`.
 [[nodiscard]] std::string judge_trial(const Dcel& reference, const Trial& trial);
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

@@ -15,7 +15,7 @@
 #include "oracles/answer_meaning.hpp"
 #include "support/answer_spellings.hpp"
 
-namespace dcel::testing::spell {
+namespace dcel::test_support::spell {
 
 using oracle::IdPolygon;
 using oracle::IdRing;
@@ -105,4 +105,4 @@ void corrupt_dump(DcelDump& d, Choices& c, std::string& story);
 [[nodiscard]] std::string dump_text(const DcelDump& d, const check::Conventions& conventions, Choices& c,
                                     std::string& story);
 
-}  // namespace dcel::testing::spell
+}  // namespace dcel::test_support::spell

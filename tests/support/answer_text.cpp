@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace dcel::testing {
+namespace dcel::test_support {
 namespace {
 
 constexpr std::array<std::string_view, 6> kSpaces{"", " ", "\n", "\t", "\r\n", "  "};
@@ -170,4 +170,4 @@ void AnswerText::maybe_ignored_member(const std::vector<std::string_view>& taken
     literal(m.value);
 }
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

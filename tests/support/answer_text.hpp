@@ -13,7 +13,7 @@
 #include "dcel/ids.hpp"
 #include "support/answer_spellings.hpp"
 
-namespace dcel::testing {
+namespace dcel::test_support {
 
 class AnswerText {
 public:
@@ -53,4 +53,4 @@ private:
     bool flip_zeros_ = false;
 };
 
-}  // namespace dcel::testing
+}  // namespace dcel::test_support

@@ -8,7 +8,7 @@
 #include "support/answer_steps.hpp"
 #include "support/answer_text.hpp"
 
-namespace dcel::testing::spell {
+namespace dcel::test_support::spell {
 namespace {
 
 // Step 4 for a dump: half-edges and faces renumbered, then turned around
@@ -485,4 +485,4 @@ std::string dump_text(const DcelDump& d, const check::Conventions& conventions, 
     return dump_json(written, nulls_as_zero, c);
 }
 
-}  // namespace dcel::testing::spell
+}  // namespace dcel::test_support::spell
