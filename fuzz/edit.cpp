@@ -78,7 +78,8 @@ void check_step(Dcel& d, PlanarGraph& model, const Step& s, int index) {
     FUZZ_CHECK(r.ids_in_range || bad_index,
                "step " << index << " " << s << ": an id past the end was not refused as a bad index: " << reason);
     if (refused) {
-        FUZZ_CHECK(test_support::same_dump(before, to_dump(d)), "step " << index << " " << s << ": a refusal changed the DCEL");
+        FUZZ_CHECK(test_support::same_dump(before, to_dump(d)),
+                   "step " << index << " " << s << ": a refusal changed the DCEL");
         return;
     }
     const auto problem = test_support::soundness_problem(d);  // validate(), and equality with the rebuild of to_graph(d)

@@ -20,14 +20,14 @@
 namespace dcel {
 
 // From the internals of the core (dcel::detail).
-using detail::LexOrder;
-using detail::RingEntry;
-using detail::StatusList;
 using detail::advise_huge_pages;
 using detail::first_same_direction;
 using detail::lex_order_checked;
+using detail::LexOrder;
 using detail::reserve_huge;
+using detail::RingEntry;
 using detail::sort_ring;
+using detail::StatusList;
 namespace {
 
 // Doubles that stress exact code: small integers, near-equal large values,

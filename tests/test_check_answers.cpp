@@ -4,8 +4,8 @@
 // graph drawn below, so what must be reported is known without asking the
 // comparison: which polygons a polygonizer gives, which rings a face finder
 // gives, and what each changed answer lacks.
-#include <algorithm>
 #include <gtest/gtest.h>
+#include <algorithm>
 
 #include <iostream>
 #include <string>
@@ -218,12 +218,11 @@ TEST(CheckRegions, DegenerateRingsCancelLikeTheirLongSpellings) {
     // examples/check/graph.json, with a lone edge 8-9 inside the triangle.
     const Dcel d = reference(R"({"vertices": [[0,0],[4,0],[4,4],[0,4],[1,1],[2,1],[1,2],[5,5],[1.2,1.2],[1.4,1.2]],
         "edges": [[0,1],[1,2],[2,3],[3,0],[4,5],[5,6],[6,4],[0,4],[8,9]]})");
-    for (const char* spelling : {R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[8,9]]]})",
-                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[8,9,8,9]]]})",
-                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[9,8,9]]]})",
-                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[7]]]})",
-                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[]]]})",
-                                 R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6]]]})"}) {
+    for (const char* spelling :
+         {R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[8,9]]]})",
+          R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[8,9,8,9]]]})",
+          R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[9,8,9]]]})", R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[7]]]})",
+          R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6],[]]]})", R"({"polygons": [[[0,1,2,3],[5,4,6]],[[4,5,6]]]})"}) {
         EXPECT_TRUE(check_text(d, spelling).agrees()) << spelling;
     }
 }

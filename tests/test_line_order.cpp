@@ -16,10 +16,10 @@
 namespace dcel {
 
 // From the internals of the core (dcel::detail).
-using detail::DirectedLine;
-using detail::LineEvent;
 using detail::compare_direction;
 using detail::cross_sign;
+using detail::DirectedLine;
+using detail::LineEvent;
 namespace {
 
 using oracle::Rational;

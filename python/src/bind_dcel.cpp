@@ -180,11 +180,10 @@ The arrays (points, origin, next, prev, face, out) are read-only numpy views
 of the C++ structure, not copies; twin, target and outer are computed. A view
 never changes: an edit made while views exist works on a copy.)doc";
 
-}  // namespace
+using DcelClass = py::class_<DcelObject>;
 
-void bind_dcel(py::module_& m) {
-    py::class_<DcelObject> cls(m, "Dcel", kDcelDoc);
-    cls.attr("__module__") = "dcel";  // shown as dcel.Dcel
+// The sizes and the stored arrays: numpy views of the C++ structure.
+void bind_arrays(DcelClass& cls) {
     cls.def_property_readonly("num_vertices", [](const DcelObject& s) { return s.get()->num_vertices(); })
         .def_property_readonly("num_edges", [](const DcelObject& s) { return s.get()->num_edges(); })
         .def_property_readonly("num_half_edges", [](const DcelObject& s) { return s.get()->num_half_edges(); })
@@ -230,13 +229,17 @@ void bind_dcel(py::module_& m) {
                 const auto d = s.get();
                 return DcelObject::view<std::uint32_t>(d, d->out_links().data(), d->num_vertices());
             },
-            "(V,) uint32: one half-edge leaving each vertex, NULL for an isolated vertex.")
-        .def_property_readonly(
-            "twin",
-            [](const DcelObject& s) {
-                return computed(s.get()->num_half_edges(), [](std::size_t h) { return static_cast<std::uint32_t>(h ^ 1U); });
-            },
-            "(H,) uint32: twin[h] = h ^ 1 (computed).")
+            "(V,) uint32: one half-edge leaving each vertex, NULL for an isolated vertex.");
+}
+
+// The arrays computed on each call (twin, target, outer) and the face records.
+void bind_computed_arrays(DcelClass& cls) {
+    cls.def_property_readonly(
+           "twin",
+           [](const DcelObject& s) {
+               return computed(s.get()->num_half_edges(), [](std::size_t h) { return static_cast<std::uint32_t>(h ^ 1U); });
+           },
+           "(H,) uint32: twin[h] = h ^ 1 (computed).")
         .def_property_readonly(
             "target",
             [](const DcelObject& s) {
@@ -261,17 +264,21 @@ void bind_dcel(py::module_& m) {
                 for (Index f = 0; f < d->num_faces(); ++f) out[f] = face_record(*d, FaceId(f));
                 return out;
             },
-            "Every face record: Face(id, outer, holes, isolated), face 0 first (outer None).")
-        .def(
-            "cycle",
-            [](const DcelObject& s, const IntArg& h) {
-                return query(s, half_edge_arg(s, h, "cycle: half-edge"), [](const Dcel& d, HalfEdgeId x) {
-                    py::list out;
-                    for (const HalfEdgeId y : d.cycle(x)) out.append(y.index());
-                    return out;
-                });
-            },
-            py::arg("h"), "The half-edges of the boundary cycle through h, in next order, from h.")
+            "Every face record: Face(id, outer, holes, isolated), face 0 first (outer None).");
+}
+
+// Walks: the half-edges of a cycle or around a vertex, every cycle.
+void bind_queries(DcelClass& cls) {
+    cls.def(
+           "cycle",
+           [](const DcelObject& s, const IntArg& h) {
+               return query(s, half_edge_arg(s, h, "cycle: half-edge"), [](const Dcel& d, HalfEdgeId x) {
+                   py::list out;
+                   for (const HalfEdgeId y : d.cycle(x)) out.append(y.index());
+                   return out;
+               });
+           },
+           py::arg("h"), "The half-edges of the boundary cycle through h, in next order, from h.")
         .def(
             "cycle_vertices",
             [](const DcelObject& s, const IntArg& h) {
@@ -295,15 +302,19 @@ void bind_dcel(py::module_& m) {
         .def(
             "boundary_cycles", [](const DcelObject& s) { return cycles_to_python(boundary_cycles(*s.get())); },
             "Every boundary cycle as its origin vertices in next order, from its smallest half-edge; the `dcel faces` "
-            "answer.")
-        .def(
-            "face_area",
-            [](const DcelObject& s, const IntArg& f) {
-                return query(s, face_arg(s, f, "face_area: face"),
-                             [](const Dcel& d, FaceId x) { return area(face_area(d, x)); });
-            },
-            py::arg("f"),
-            "Area(value, sign) of face f: its outer cycle's area minus its holes'. Face 0: (inf, 1). The sign is exact.")
+            "answer.");
+}
+
+// Areas, neighbours and components.
+void bind_measures(DcelClass& cls) {
+    cls.def(
+           "face_area",
+           [](const DcelObject& s, const IntArg& f) {
+               return query(s, face_arg(s, f, "face_area: face"),
+                            [](const Dcel& d, FaceId x) { return area(face_area(d, x)); });
+           },
+           py::arg("f"),
+           "Area(value, sign) of face f: its outer cycle's area minus its holes'. Face 0: (inf, 1). The sign is exact.")
         .def(
             "cycle_area",
             [](const DcelObject& s, const IntArg& h) {
@@ -328,16 +339,20 @@ void bind_dcel(py::module_& m) {
             "The faces met walking counterclockwise around v (one per wedge); for an isolated vertex, its face.")
         .def(
             "count_components", [](const DcelObject& s) { return count_components(*s.get()); },
-            "The number of connected components, isolated vertices included.")
-        .def(
-            "locate",
-            [](DcelObject& s, const py::object& p) {
-                const Point at = point_from(p, "locate: point");  // first: its code may edit s
-                return location(s.locator()->locate(at));
-            },
-            py::arg("point"),
-            "Location(kind, id) of the point (x, y): kind \"vertex\", \"edge\" (inside it) or \"face\" (inside it). Exact.\n"
-            "The first call builds a point locator (O(E log E) expected); later calls take O(log E) expected.")
+            "The number of connected components, isolated vertices included.");
+}
+
+// Point location, stabbing and validation.
+void bind_location(DcelClass& cls) {
+    cls.def(
+           "locate",
+           [](DcelObject& s, const py::object& p) {
+               const Point at = point_from(p, "locate: point");  // first: its code may edit s
+               return location(s.locator()->locate(at));
+           },
+           py::arg("point"),
+           "Location(kind, id) of the point (x, y): kind \"vertex\", \"edge\" (inside it) or \"face\" (inside it). Exact.\n"
+           "The first call builds a point locator (O(E log E) expected); later calls take O(log E) expected.")
         .def("locate_many", &locate_all, py::arg("points"), "locate() of each point of an (n, 2) array or list of pairs.")
         .def(
             "stab",
@@ -354,16 +369,21 @@ void bind_dcel(py::module_& m) {
             "through a and b, from the unbounded face to the unbounded face.")
         .def(
             "validate", [](const DcelObject& s) { return violations_to_python(validate_all(to_dump(*s.get()))); },
-            "Every broken invariant (the first of each checker); [] for a DCEL built here.")
-        .def(
-            "split_edge",
-            [](DcelObject& s, const IntArg& e, const py::object& p) {
-                const Point at = point_from(p, "split_edge: point");
-                const EdgeId id = edge_arg(s, e, "split_edge: edge");
-                return edited([&] { return split_edge(s.for_edit(), id, at); }, {}, {id.index()});
-            },
-            py::arg("e"), py::arg("point"),
-            "Splits edge e at point (exactly on e, strictly inside). The new vertex is V, the new edge E. Returns a Change.")
+            "Every broken invariant (the first of each checker); [] for a DCEL built here.");
+}
+
+// The edits that split and add: each converts its arguments first (their
+// code may edit the DCEL), then edits.
+void bind_edits(DcelClass& cls) {
+    cls.def(
+           "split_edge",
+           [](DcelObject& s, const IntArg& e, const py::object& p) {
+               const Point at = point_from(p, "split_edge: point");
+               const EdgeId id = edge_arg(s, e, "split_edge: edge");
+               return edited([&] { return split_edge(s.for_edit(), id, at); }, {}, {id.index()});
+           },
+           py::arg("e"), py::arg("point"),
+           "Splits edge e at point (exactly on e, strictly inside). The new vertex is V, the new edge E. Returns a Change.")
         .def(
             "add_edge",
             [](DcelObject& s, const IntArg& u, const IntArg& v) {
@@ -391,14 +411,18 @@ void bind_dcel(py::module_& m) {
                 const Point at = point_from(p, "add_vertex: point");
                 return edited([&] { return add_vertex(s.for_edit(), at); }, {});
             },
-            py::arg("point"), "Adds an isolated vertex at point, listed in the face containing it. Returns a Change.")
-        .def(
-            "remove_edge",
-            [](DcelObject& s, const IntArg& e) {
-                const EdgeId id = edge_arg(s, e, "remove_edge: edge");
-                return edited([&] { return remove_edge(s.for_edit(), id); }, {}, {id.index()});
-            },
-            py::arg("e"), "Removes edge e; the last edge moves into its id. Returns a Change.")
+            py::arg("point"), "Adds an isolated vertex at point, listed in the face containing it. Returns a Change.");
+}
+
+// The edits that remove: each converts its argument first, then edits.
+void bind_removals(DcelClass& cls) {
+    cls.def(
+           "remove_edge",
+           [](DcelObject& s, const IntArg& e) {
+               const EdgeId id = edge_arg(s, e, "remove_edge: edge");
+               return edited([&] { return remove_edge(s.for_edit(), id); }, {}, {id.index()});
+           },
+           py::arg("e"), "Removes edge e; the last edge moves into its id. Returns a Change.")
         .def(
             "remove_isolated_vertex",
             [](DcelObject& s, const IntArg& v) {
@@ -413,11 +437,15 @@ void bind_dcel(py::module_& m) {
                 return edited([&] { return merge_collinear_edges(s.for_edit(), id); }, {id.index()});
             },
             py::arg("v"),
-            "Removes v, which has exactly two edges a-v-b with v strictly inside a-b: the inverse of split_edge.")
-        .def(
-            "graph", [](const DcelObject& s) { return graph_as_arrays(to_graph(*s.get())); },
-            "The graph under this DCEL as Graph(vertices, edges) of numpy arrays: build() of it gives this DCEL again\n"
-            "(up to face numbering). How an edited DCEL is saved.")
+            "Removes v, which has exactly two edges a-v-b with v strictly inside a-b: the inverse of split_edge.");
+}
+
+// The graph, the dump, the picture, copies and the repr.
+void bind_output(DcelClass& cls) {
+    cls.def(
+           "graph", [](const DcelObject& s) { return graph_as_arrays(to_graph(*s.get())); },
+           "The graph under this DCEL as Graph(vertices, edges) of numpy arrays: build() of it gives this DCEL again\n"
+           "(up to face numbering). How an edited DCEL is saved.")
         .def(
             "to_json",
             [](const DcelObject& s, const FlagArg& compact) {
@@ -451,7 +479,10 @@ void bind_dcel(py::module_& m) {
             return "<dcel.Dcel: " + std::to_string(d->num_vertices()) + " vertices, " + std::to_string(d->num_edges()) +
                    " edges, " + std::to_string(d->num_faces()) + " faces>";
         });
+}
 
+// The module functions that build: build(), faces() and read_graph().
+void bind_build_functions(py::module_& m) {
     m.def(
         "build",
         [](const py::object& vertices, const py::object& edges, const FlagArg& check_crossings) {
@@ -482,6 +513,10 @@ are none). O((V + E) log(V + E)).)doc");
         "The graph in JSON text (`dcel faces` input: {\"vertices\": [[x, y], ...], \"edges\": [[u, v], ...]} or the\n"
         "positional form), read as the CLI reads it (coordinates correctly rounded), as Graph(vertices, edges) of\n"
         "numpy arrays. InvalidInput names the place of a syntax or shape error (line and column, or a JSON path).");
+}
+
+// For measuring the binding's overhead (python/bench).
+void bind_timing(py::module_& m) {
     m.def(
         "_build_seconds",
         [](const py::object& vertices, const py::object& edges, const IntArg& repeat_arg) {
@@ -505,6 +540,23 @@ are none). O((V + E) log(V + E)).)doc");
             return seconds;
         },
         py::arg("vertices"), py::arg("edges"), py::arg("repeat") = 1);
+}
+
+}  // namespace
+
+void bind_dcel(py::module_& m) {
+    DcelClass cls(m, "Dcel", kDcelDoc);
+    cls.attr("__module__") = "dcel";  // shown as dcel.Dcel
+    bind_arrays(cls);
+    bind_computed_arrays(cls);
+    bind_queries(cls);
+    bind_measures(cls);
+    bind_location(cls);
+    bind_edits(cls);
+    bind_removals(cls);
+    bind_output(cls);
+    bind_build_functions(m);
+    bind_timing(m);
 }
 
 }  // namespace dcel::python

@@ -37,9 +37,8 @@ PlanarGraph valid_graph_from(py::handle graph) {
     return g;
 }
 
-}  // namespace
-
-void bind_gen(py::module_& m) {
+// families() and generate(): the generators.
+void bind_generators(py::module_& m) {
     m.def(
         "families",
         [] {
@@ -70,6 +69,10 @@ void bind_gen(py::module_& m) {
         py::arg("family"), py::arg("seed"), py::arg("vertices") = 16,
         "A random valid graph (a Graph of lists) from the library's generators, as `dcel gen` makes it: the same\n"
         "family, seed and size give the same graph everywhere, with exactly that many vertices.");
+}
+
+// shrink_candidates() and shrink(): shrinking a failing graph.
+void bind_shrinking(py::module_& m) {
     m.def(
         "shrink_candidates",
         [](const py::object& graph) {
@@ -104,6 +107,10 @@ void bind_gen(py::module_& m) {
         "Greedy shrinking (what `dcel diff` does): moves to the first shrink candidate for which still_fails(g)\n"
         "is true, until none is or max_steps calls are spent. Returns the smallest failing graph found. graph\n"
         "must be valid (InvalidInput as from build() when not); an exception still_fails raises goes on as it is.");
+}
+
+// transform() and plant(): exact transforms and planted defects.
+void bind_transforms(py::module_& m) {
     m.def(
         "transform",
         [](const py::object& graph, const TextArg& kind_arg, const IntArg& amount_arg) {
@@ -142,6 +149,14 @@ void bind_gen(py::module_& m) {
         "graph with one defect planted, an invalid graph that build() refuses: \"crossing\", \"touch\" (a vertex\n"
         "inside an edge) or \"overlap\" (collinear edges sharing more than a point). None when there is no place.\n"
         "graph must be valid (InvalidInput as from build() when not).");
+}
+
+}  // namespace
+
+void bind_gen(py::module_& m) {
+    bind_generators(m);
+    bind_shrinking(m);
+    bind_transforms(m);
 }
 
 }  // namespace dcel::python

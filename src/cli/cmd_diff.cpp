@@ -203,17 +203,16 @@ void add_schedule_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) 
     cmd.add_option("--max-vertices", raw.max_vertices,
                    "Largest size of the growing cases" + default_is(d.schedule.max_vertices))
         ->type_name("K");
-    cmd.add_option("--large-vertices", raw.large_vertices,
-                   "Size of every 50th case, a large one (default " + std::to_string(d.schedule.large_vertices) +
-                       "; 0: none)")
+    cmd.add_option(
+           "--large-vertices", raw.large_vertices,
+           "Size of every 50th case, a large one (default " + std::to_string(d.schedule.large_vertices) + "; 0: none)")
         ->type_name("L");
     cmd.add_option("--families", raw.families, "Only these generator families, comma-separated")->type_name("LIST");
     cmd.add_option("--exclude-families", raw.exclude_families, "Every generator family but these")->type_name("LIST");
     cmd.add_option("--coordinates", raw.coordinates,
                    "Only these coordinate classes: small-integers, normal, huge, tiny, subnormal")
         ->type_name("LIST");
-    cmd.add_option("--exclude-coordinates", raw.exclude_coordinates, "Every coordinate class but these")
-        ->type_name("LIST");
+    cmd.add_option("--exclude-coordinates", raw.exclude_coordinates, "Every coordinate class but these")->type_name("LIST");
     cmd.add_flag("--positional", options.schedule.positional,
                  "Also send some graphs in the positional form [[[x, y], ...], [[u, v], ...]] (default: object form only)");
 }
@@ -234,8 +233,7 @@ void add_run_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) {
                    "With --keep-going, stop after N distinct failures" + default_is(d.max_failures))
         ->type_name("N");
     cmd.add_option("--case", raw.only_case, "Run only case N of the schedule (to replay a report)")->type_name("N");
-    cmd.add_option("--print-case", raw.print_case, "Print case N's graph, its exact bytes, and run nothing")
-        ->type_name("N");
+    cmd.add_option("--print-case", raw.print_case, "Print case N's graph, its exact bytes, and run nothing")->type_name("N");
 }
 
 void add_output_options(CLI::App& cmd, RawOptions& raw) {

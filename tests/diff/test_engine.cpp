@@ -15,8 +15,8 @@
 namespace dcel::diff {
 namespace {
 
-using fake::Reply;
 using fake::Call;
+using fake::Reply;
 using std::chrono::milliseconds;
 
 struct Harness {
@@ -33,9 +33,8 @@ struct Harness {
 };
 
 std::size_t degree(const PlanarGraph& g, std::size_t v) {
-    return static_cast<std::size_t>(std::count_if(g.edges.begin(), g.edges.end(), [&](const GraphEdge& e) {
-        return e.u.index() == v || e.v.index() == v;
-    }));
+    return static_cast<std::size_t>(std::count_if(g.edges.begin(), g.edges.end(),
+                                                  [&](const GraphEdge& e) { return e.u.index() == v || e.v.index() == v; }));
 }
 bool has_isolated_vertex(const PlanarGraph& g) {
     for (std::size_t v = 0; v < g.vertices.size(); ++v) {
@@ -82,8 +81,8 @@ TEST(DiffEngine, AWrongAnswerIsShrunkToTheSmallestGraphThatFailsTheSameWay) {
 
 TEST(DiffEngine, ACrashIsShrunkToOneIsolatedVertex) {
     Harness h;
-    const DiffResult r =
-        h.run([](const Call& run) { return has_isolated_vertex(run.graph) ? fake::signalled(11) : right(run); });
+    const DiffResult r = h.run(
+        [](const Call& run) { return has_isolated_vertex(run.graph) ? fake::signalled(11) : right(run); });
     ASSERT_EQ(r.failures.size(), 1U);
     const Counterexample& c = r.failures[0].example;
     EXPECT_EQ(c.outcome.kind, FailureKind::Crash);
@@ -94,8 +93,7 @@ TEST(DiffEngine, ACrashIsShrunkToOneIsolatedVertex) {
 
 TEST(DiffEngine, ShellExitStatusAboveOneTwentyEightIsASignal) {
     Harness h;
-    const DiffResult r =
-        h.run([](const Call& run) { return run.graph.edges.size() >= 2 ? fake::exited(139) : right(run); });
+    const DiffResult r = h.run([](const Call& run) { return run.graph.edges.size() >= 2 ? fake::exited(139) : right(run); });
     ASSERT_EQ(r.failures.size(), 1U);
     EXPECT_EQ(r.failures[0].example.first.kind, FailureKind::Crash);
     EXPECT_EQ(r.failures[0].example.first.run.signal, 11);
@@ -160,9 +158,8 @@ TEST(DiffEngine, AStreamThatKeepsStateIsReportedWithTheGraphsBeforeIt) {
     // Fails on any graph that follows one of five vertices or more in the
     // same process: alone, every graph passes.
     const DiffResult r = h.run([](const Call& run) {
-        const bool after_big = std::any_of(run.before.begin(), run.before.end(), [](const std::string& t) {
-            return io::read_graph(t).vertices.size() >= 5;
-        });
+        const bool after_big = std::any_of(run.before.begin(), run.before.end(),
+                                           [](const std::string& t) { return io::read_graph(t).vertices.size() >= 5; });
         return after_big ? fake::exited(5) : right(run);
     });
     ASSERT_EQ(r.failures.size(), 1U);
@@ -200,8 +197,8 @@ TEST(DiffEngine, OnlyCaseReplaysOneCase) {
 
 TEST(DiffEngine, TheJsonReportIsValidWhateverTheImplementationPrinted) {
     Harness h;
-    const DiffResult r =
-        h.run([](const Call& run) { return run.graph.edges.size() >= 2 ? fake::answer("\xff\xfe{\"faces\": \x01") : right(run); });
+    const DiffResult r = h.run(
+        [](const Call& run) { return run.graph.edges.size() >= 2 ? fake::answer("\xff\xfe{\"faces\": \x01") : right(run); });
     ASSERT_EQ(r.failures.size(), 1U);
     const std::string json = report_json(h.options, r);
     io::JsonReader reader(json);
@@ -302,7 +299,7 @@ TEST(DiffEngine, ShrinkingKeepsTheClassNotTheFirstDifference) {
     const DiffResult r = h.run([](const Call& c) {
         if (c.graph.edges.size() < 3) return right(c);
         if (c.graph.edges.size() >= 6) return fake::answer("{\"faces\": []}");  // missing cycles
-        return reverses_cycles(c);                                          // reversed cycles
+        return reverses_cycles(c);                                              // reversed cycles
     });
     ASSERT_EQ(r.failures.size(), 1U);
     EXPECT_EQ(r.failures[0].example.graph.edges.size(), 3U);

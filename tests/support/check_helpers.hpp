@@ -113,7 +113,8 @@ inline DcelDump renumbered(const DcelDump& d, const DumpRenumbering& r) {
     out.half_edges.resize(halves);
     for (Index h = 0; h < halves; ++h) {
         const HalfEdgeRecord& e = d.half_edges[h];
-        out.half_edges[r.half_edges[h]] = {e.origin, h_of(e.twin), h_of(e.next), h_of(e.prev), FaceId(r.faces[e.face.index()])};
+        out.half_edges[r.half_edges[h]] = {e.origin, h_of(e.twin), h_of(e.next), h_of(e.prev),
+                                           FaceId(r.faces[e.face.index()])};
     }
     out.faces.resize(faces);
     for (Index f = 0; f < faces; ++f) {

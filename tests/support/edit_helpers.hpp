@@ -42,22 +42,22 @@ inline HalfEdgeId half_edge(const Dcel& d, Index u, Index v) {
 }  // namespace dcel::test_support
 
 // validate() passes and the DCEL equals the rebuild of its graph.
-#define EXPECT_SOUND(d)                                              \
-    do {                                                             \
+#define EXPECT_SOUND(d)                                                   \
+    do {                                                                  \
         const auto problem_ = ::dcel::test_support::soundness_problem(d); \
-        EXPECT_FALSE(problem_.has_value()) << *problem_;             \
+        EXPECT_FALSE(problem_.has_value()) << *problem_;                  \
     } while (false)
 
 // The statement throws the exception type and leaves d exactly as it was.
-#define EXPECT_REFUSED_UNCHANGED(d, statement, exception, text)                                         \
-    do {                                                                                                \
-        const ::dcel::DcelDump before_ = ::dcel::to_dump(d);                                            \
-        try {                                                                                           \
-            (void)(statement);                                                                          \
-            ADD_FAILURE() << "not refused: " #statement;                                                \
-        } catch (const exception& e_) {                                                                 \
-            EXPECT_NE(std::string(e_.what()).find(text), std::string::npos) << e_.what();               \
-            EXPECT_EQ(std::string(e_.what()).find('\n'), std::string::npos) << e_.what();               \
-        }                                                                                               \
+#define EXPECT_REFUSED_UNCHANGED(d, statement, exception, text)                                              \
+    do {                                                                                                     \
+        const ::dcel::DcelDump before_ = ::dcel::to_dump(d);                                                 \
+        try {                                                                                                \
+            (void)(statement);                                                                               \
+            ADD_FAILURE() << "not refused: " #statement;                                                     \
+        } catch (const exception& e_) {                                                                      \
+            EXPECT_NE(std::string(e_.what()).find(text), std::string::npos) << e_.what();                    \
+            EXPECT_EQ(std::string(e_.what()).find('\n'), std::string::npos) << e_.what();                    \
+        }                                                                                                    \
         EXPECT_TRUE(::dcel::test_support::same_dump(before_, ::dcel::to_dump(d))) << "changed: " #statement; \
     } while (false)

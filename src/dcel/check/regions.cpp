@@ -112,10 +112,10 @@ struct MappedRing {
 
 // What the answer's regions are compared with, and what they are called.
 enum class Regions : std::uint8_t {
-    Polygons,       // every bounded face, with holes
-    Rings,          // every bounded face, filled in
+    Polygons,         // every bounded face, with holes
+    Rings,            // every bounded face, filled in
     UnattachedHoles,  // polygons with --holes-unattached: compared as rings, called polygons
-    EvenOdd,        // the bounded faces inside an odd number of boundaries, with holes
+    EvenOdd,          // the bounded faces inside an odd number of boundaries, with holes
 };
 
 class RegionComparison {

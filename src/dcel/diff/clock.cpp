@@ -9,7 +9,8 @@ class SystemClock : public Clock {
 public:
     [[nodiscard]] time_point now() const override { return std::chrono::steady_clock::now(); }
     [[nodiscard]] std::chrono::milliseconds cpu() const override {
-        return std::chrono::milliseconds(static_cast<std::int64_t>(static_cast<double>(std::clock()) * 1000.0 / CLOCKS_PER_SEC));
+        return std::chrono::milliseconds(
+            static_cast<std::int64_t>(static_cast<double>(std::clock()) * 1000.0 / CLOCKS_PER_SEC));
     }
 };
 

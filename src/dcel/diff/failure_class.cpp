@@ -21,12 +21,12 @@ bool is_noise(std::string_view raw) {
     const std::string_view line = trimmed(raw);
     if (line.empty()) return true;
     const bool indented = raw.front() == ' ' || raw.front() == '\t';
-    if (starts_with(line, "at ") && indented) return true;                           // JavaScript, Java frames
-    if (starts_with(line, "File \"")) return true;                                   // Python frames
-    if (starts_with(line, "Traceback (most recent call last)")) return true;         // Python
-    if (line.find_first_not_of("^~ ") == std::string_view::npos) return true;        // carets under an excerpt
+    if (starts_with(line, "at ") && indented) return true;                                    // JavaScript, Java frames
+    if (starts_with(line, "File \"")) return true;                                            // Python frames
+    if (starts_with(line, "Traceback (most recent call last)")) return true;                  // Python
+    if (line.find_first_not_of("^~ ") == std::string_view::npos) return true;                 // carets under an excerpt
     if (starts_with(line, "Node.js v") && line.size() > 9 && is_digit(line[9])) return true;  // node's banner
-    if (line.front() == '#' && line.size() > 1 && is_digit(line[1])) return true;    // gdb / sanitizer frames
+    if (line.front() == '#' && line.size() > 1 && is_digit(line[1])) return true;             // gdb / sanitizer frames
     if (starts_with(line, "...") || starts_with(line, "at <")) return true;
     return indented && !starts_with(line, "Error") && line.find("rror:") == std::string_view::npos &&
            line.find("xception") == std::string_view::npos;  // an indented excerpt of source

@@ -16,10 +16,10 @@
 namespace dcel::diff {
 
 namespace defaults {
-inline constexpr std::size_t kCases = 200;                 // without --time
-inline constexpr std::size_t kMaxFailures = 20;            // distinct failures, with --keep-going
+inline constexpr std::size_t kCases = 200;       // without --time
+inline constexpr std::size_t kMaxFailures = 20;  // distinct failures, with --keep-going
 inline constexpr std::chrono::milliseconds kShrinkTime{20000};
-inline constexpr std::size_t kShrinkAttempts = 5000;       // candidates run per failure, at most
+inline constexpr std::size_t kShrinkAttempts = 5000;  // candidates run per failure, at most
 }  // namespace defaults
 
 // How to read another implementation's answer: --answer and the conventions
@@ -34,9 +34,9 @@ struct DiffOptions {
     bool stream = false;   // run "IMPL --stream" once, a line per case
     ProcessLimits limits;  // per case
     Schedule schedule;
-    std::optional<std::size_t> cases;               // none: until --time runs out
-    std::optional<std::size_t> only_case;           // --case: replay this one
-    std::optional<std::chrono::milliseconds> time;  // bounds the search for failures
+    std::optional<std::size_t> cases;                               // none: until --time runs out
+    std::optional<std::size_t> only_case;                           // --case: replay this one
+    std::optional<std::chrono::milliseconds> time;                  // bounds the search for failures
     std::chrono::milliseconds shrink_time = defaults::kShrinkTime;  // bounds the shrinking of each failure
     std::size_t shrink_attempts = defaults::kShrinkAttempts;
     AnswerOptions answer;

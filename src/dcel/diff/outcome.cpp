@@ -70,7 +70,8 @@ std::vector<std::vector<std::vector<Index>>> regions_of(const check::Answer& a, 
                                                         const check::Conventions& c) {
     std::vector<std::vector<std::vector<Index>>> out;
     const check::RegionAnswer& r = a.regions;
-    if (a.kind != check::AnswerKind::Polygons && a.kind != check::AnswerKind::Rings && a.kind != check::AnswerKind::EvenOdd) {
+    if (a.kind != check::AnswerKind::Polygons && a.kind != check::AnswerKind::Rings &&
+        a.kind != check::AnswerKind::EvenOdd) {
         return out;
     }
     if (r.ids.size() + r.points.size() > kMaxDrawnIds) return out;
@@ -128,9 +129,10 @@ std::string kinds_text(const std::vector<check::AnswerKind>& kinds) {
     return s;
 }
 
-}  // namespace
-
-Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits, AnswerJudging& judging) {
+// How the run ended, before its answer is read: a crash, a timeout, too much
+// output, an exit status, nothing printed, or one of the protocol's own
+// answers (a skip, a refusal); nothing when there is an answer to read.
+std::optional<Outcome> process_outcome(const ProcessResult& run, const ProcessLimits& limits) {
     switch (run.end) {
         case ProcessEnd::Signalled: return failed(FailureKind::Crash, describe_end(run, limits), run);
         case ProcessEnd::TimedOut: return failed(FailureKind::Timeout, describe_end(run, limits), run);
@@ -158,6 +160,13 @@ Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimi
         o.skip_reason = escape_for_message(reply->text, 120);
         return o;
     }
+    return std::nullopt;
+}
+
+}  // namespace
+
+Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits, AnswerJudging& judging) {
+    if (std::optional<Outcome> ended = process_outcome(run, limits)) return std::move(*ended);
     const std::optional<check::AnswerKind> given = judging.options.kind;
     check::Answer answer;
     try {

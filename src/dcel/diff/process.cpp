@@ -17,7 +17,6 @@
 #include <string_view>
 #include <thread>
 
-
 extern char** environ;  // NOLINT: POSIX declares it nowhere else
 
 namespace dcel::diff {

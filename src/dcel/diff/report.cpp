@@ -85,8 +85,8 @@ void shrink_text(std::ostream& s, const DiffOptions& options, const Counterexamp
           << count(c.steps, "smaller failing graph") << " kept" << budget << ") to a graph that fails the same way"
           << (c.minimal ? "; no single vertex, edge or coordinate simplification of it does (1-minimal)" : "") << "\n";
         if (failure_label(c.outcome) != failure_label(c.first)) {
-            s << "(the case failed as " << failure_label(c.first) << "; the counterexample as "
-              << failure_label(c.outcome) << ": the same class of failure)\n";
+            s << "(the case failed as " << failure_label(c.first) << "; the counterexample as " << failure_label(c.outcome)
+              << ": the same class of failure)\n";
         }
     }
     if (c.shrink_timeout) {
@@ -279,7 +279,9 @@ std::string label_with_error_line(const Outcome& o) {
 
 }  // namespace
 
-bool run_passes(const DiffResult& result) { return result.failures.empty() && (result.checked() > 0 || result.cases_run == 0); }
+bool run_passes(const DiffResult& result) {
+    return result.failures.empty() && (result.checked() > 0 || result.cases_run == 0);
+}
 
 std::string format_report(const DiffOptions& options, const DiffResult& result) {
     std::ostringstream s;
@@ -299,8 +301,8 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
         if (several) {
             s << "\nfailure " << f.id << " of " << result.failures.size() << ": " << label_with_error_line(c.first)
               << " on case " << c.original.spec.number << " (" << case_text(c.original) << "), found after "
-              << seconds(f.found_after) << "; " << count(f.occurrences, "case") << " failed this way ("
-              << cases_list(f) << "), in " << classes_text(f) << "\n";
+              << seconds(f.found_after) << "; " << count(f.occurrences, "case") << " failed this way (" << cases_list(f)
+              << "), in " << classes_text(f) << "\n";
         } else {
             s << "dcel diff: " << label_with_error_line(c.first) << " on case " << c.original.spec.number << " ("
               << case_text(c.original) << ", seed " << options.schedule.seed << "), found in " << seconds(f.found_after)

@@ -249,8 +249,8 @@ private:
 
     // The outcome when the graph fails like `like` (run in a fresh process
     // after `prefix` when there is one, under `limit`), or nothing.
-    std::optional<Outcome> fails_same(Implementation& impl, const std::vector<std::string>& prefix,
-                                      const std::string& text, const Outcome& like, milliseconds limit) {
+    std::optional<Outcome> fails_same(Implementation& impl, const std::vector<std::string>& prefix, const std::string& text,
+                                      const Outcome& like, milliseconds limit) {
         const PlanarGraph g = io::read_graph(text);
         if (!prefix.empty()) {
             impl.restart();
@@ -315,8 +315,8 @@ private:
         ++s.x.attempts;
         if (progress_) {
             progress_("shrinking failure " + std::to_string(result_.failures.size() + 1) + ": " +
-                      std::to_string(s.x.graph.vertices.size()) + " vertices, " +
-                      std::to_string(s.x.graph.edges.size()) + " edges, " + std::to_string(s.x.attempts) + " attempts");
+                      std::to_string(s.x.graph.vertices.size()) + " vertices, " + std::to_string(s.x.graph.edges.size()) +
+                      " edges, " + std::to_string(s.x.attempts) + " attempts");
         }
         if (!prefix.empty()) {
             s.impl->restart();
@@ -419,7 +419,7 @@ private:
     AnswerJudging judging_;
     DiffResult result_;
     milliseconds slowest_pass_{0};
-    SpeedModel speed_;  // the implementation's speed on passing cases, for each case's time limit
+    SpeedModel speed_;                // the implementation's speed on passing cases, for each case's time limit
     std::deque<Case> history_;        // --stream: the last graphs that passed, in order
     std::vector<Case> prefix_cases_;  // the cases behind a failure's prefix
 };

@@ -55,11 +55,11 @@ struct Counterexample {
 // signature, or makes a new one. So one bug seen in two coordinate classes
 // is one failure that lists both.
 struct Failure {
-    std::size_t id = 0;                           // 1, 2, ... in the order found
-    std::vector<std::string> keys;                // the case keys counted as this failure
-    std::vector<gen::CoordinateClass> classes;    // the coordinate classes it failed in, as seen
-    std::string signature;                        // of the counterexample, after shrinking
-    std::vector<std::size_t> cases;               // the cases that failed this way (the first kMaxListedCases)
+    std::size_t id = 0;                         // 1, 2, ... in the order found
+    std::vector<std::string> keys;              // the case keys counted as this failure
+    std::vector<gen::CoordinateClass> classes;  // the coordinate classes it failed in, as seen
+    std::string signature;                      // of the counterexample, after shrinking
+    std::vector<std::size_t> cases;             // the cases that failed this way (the first kMaxListedCases)
     std::size_t occurrences = 0;
     std::chrono::milliseconds found_after{};  // from the start of the run
     Counterexample example;
@@ -94,7 +94,7 @@ struct DiffResult {
     std::size_t restarts = 0;  // --stream: starts of the command after the first
     std::vector<Failure> failures;
     std::array<std::size_t, check::kAnswerKindCount> agreed_as{};  // answers that agreed, by the kind they were read as
-    std::size_t large_cases = 0;             // large cases run
+    std::size_t large_cases = 0;                                   // large cases run
     // CPU time of dcel itself (generating, writing, building the reference,
     // judging), without the command's: what the reference side costs.
     std::chrono::milliseconds reference_cpu{};

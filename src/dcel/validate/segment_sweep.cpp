@@ -197,10 +197,10 @@ private:
     std::span<const VertexId> order_;
     std::span<const char> wanted_;
     bool find_contact_;
-    std::vector<Index> starts_at_;   // by rank, see group_edges
-    std::vector<Segment> starting_;  // by slot
-    std::vector<Index> ends_at_;     // by rank
-    std::vector<Index> ending_;      // slots
+    std::vector<Index> starts_at_;                 // by rank, see group_edges
+    std::vector<Segment> starting_;                // by slot
+    std::vector<Index> ends_at_;                   // by rank
+    std::vector<Index> ending_;                    // slots
     std::pmr::unsynchronized_pool_resource pool_;  // the status's nodes, reused as edges come and go
     Status status_;
     std::vector<Status::iterator> where_;  // by slot, while active

@@ -1,10 +1,10 @@
 #include "dcel/validate.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <span>
 #include <string>
 
+#include "dcel/core/union_find.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/area.hpp"
@@ -20,9 +20,9 @@ namespace dcel {
 using detail::DrawingProblem;
 using detail::find_drawing_problem;
 using detail::polygon_area_sign;
-using detail::SweepAnswers;
 using detail::sweep_order;
 using detail::sweep_segments;
+using detail::SweepAnswers;
 namespace {
 
 // Sizes as 32-bit counts (references() checks they fit before anything else).
@@ -425,21 +425,12 @@ namespace {
 // first in sweep order; returned in sweep order.
 std::vector<VertexId> leftmost_vertices(const PlanarGraph& g, std::span<const VertexId> order) {
     const auto n = static_cast<Index>(g.vertices.size());
-    std::vector<Index> parent(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto root = [&](Index x) {
-        while (parent[x] != x) x = parent[x] = parent[parent[x]];
-        return x;
-    };
-    for (const GraphEdge& e : g.edges) {
-        const Index a = root(e.u.index());
-        const Index b = root(e.v.index());
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
+    detail::UnionFind sets(n);
+    for (const GraphEdge& e : g.edges) sets.unite(e.u.index(), e.v.index());
     std::vector<char> root_seen(n, 0);
     std::vector<VertexId> leftmost;
     for (const VertexId v : order) {
-        const Index r = root(v.index());
+        const Index r = sets.find(v.index());
         if (root_seen[r] == 0) {
             root_seen[r] = 1;
             leftmost.push_back(v);
@@ -488,8 +479,8 @@ FaceId face_above(const DcelDump& d, const UnderlyingGraph& u, EdgeId e, FaceId 
     if (e.is_null()) return unbounded;
     const PlanarGraph& g = u.graph;
     const HalfEdgeId forward = half_edge_of(e, 0);
-    const bool left_to_right =
-        lex_less(g.vertices[graph_origin(g, forward).index()], g.vertices[graph_target(g, forward).index()]);
+    const bool left_to_right = lex_less(g.vertices[graph_origin(g, forward).index()],
+                                        g.vertices[graph_target(g, forward).index()]);
     return rec(d, u.to_dump_half_edge[(left_to_right ? forward : twin(forward)).index()]).face;
 }
 
@@ -561,7 +552,8 @@ constexpr Step kSteps[] = {
     {Invariant::NextOrigin, check_next_origin, bit(Invariant::Twin)},
     {Invariant::FaceOnCycle, check_face_on_cycle, bit(Invariant::Twin)},
     {Invariant::VertexOut, check_vertex_out, bit(Invariant::Twin)},
-    {Invariant::FaceRecords, check_face_records, bit(Invariant::Twin) | bit(Invariant::NextPrev) | bit(Invariant::FaceOnCycle)},
+    {Invariant::FaceRecords, check_face_records,
+     bit(Invariant::Twin) | bit(Invariant::NextPrev) | bit(Invariant::FaceOnCycle)},
     {Invariant::IsolatedVertices, check_isolated_vertices, bit(Invariant::Twin)},
     {Invariant::Embedding, check_embedding, bit(Invariant::Twin)},
     {Invariant::Rotation, check_rotation, bit(Invariant::Embedding) | kWalks},
