@@ -23,7 +23,6 @@ using detail::Linking;
 using detail::rank_graph_checked;
 using detail::RankGraph;
 using detail::reserve_huge;
-using detail::sweep;
 using detail::sweep_ranks;
 using detail::UnionFind;
 namespace {

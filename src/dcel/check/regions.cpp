@@ -420,7 +420,7 @@ private:
             const FaceId f = d_.face(HalfEdgeId(h));
             const bool on_chain = f != Dcel::kUnboundedFace &&
                                   std::binary_search(chains_[f.index()].begin(), chains_[f.index()].end(), h);
-            if (!on_chain || (!only.is_null() && f != only)) return FaceId();
+            if (!on_chain || (!only.is_null() && f != only)) return {};
             only = f;
         }
         return only;

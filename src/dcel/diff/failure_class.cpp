@@ -1,6 +1,7 @@
 #include "dcel/diff/failure_class.hpp"
 
 #include <cctype>
+#include <ranges>
 #include <vector>
 
 namespace dcel::diff {
@@ -44,8 +45,8 @@ std::string meaningful_line(std::string_view text) {
         lines.push_back(line);
         begin = end + 1;
     }
-    for (auto it = lines.rbegin(); it != lines.rend(); ++it) {
-        if (!is_noise(*it)) return std::string(trimmed(*it));
+    for (const std::string_view line : std::ranges::reverse_view(lines)) {
+        if (!is_noise(line)) return std::string(trimmed(line));
     }
     return {};
 }

@@ -12,7 +12,7 @@ void SpeedModel::record(std::size_t size, std::chrono::milliseconds took) {
 
 std::chrono::milliseconds SpeedModel::predicted(std::size_t size) const {
     if (slowest_.empty()) return std::chrono::milliseconds(0);
-    const double fixed = static_cast<double>(fastest_.count());
+    const auto fixed = static_cast<double>(fastest_.count());
     double worst = 0;
     for (const auto& [n, t] : slowest_) {
         const double ratio = std::max(1.0, static_cast<double>(size) / static_cast<double>(n));

@@ -65,7 +65,8 @@ enum class Defect : std::uint8_t { Crossing, Touch, Overlap };
 
 // Smaller valid graphs derived from g, most aggressive first, one at a time:
 // the empty graph, the isolated vertices dropped, each component alone and
-// each dropped, runs of edges dropped, vertices dropped, degree-2 vertices merged away (a-v-b becomes a-b), edges
+// each dropped, blocks of vertices dropped, runs of edges dropped, vertices
+// dropped, degree-2 vertices merged away (a-v-b becomes a-b), edges
 // contracted, coordinates snapped towards small integers (shrink.cpp has the
 // details). Every candidate is valid. Holds one candidate at a time, so it
 // serves graphs of any size; each next() costs O(V + E) (O(V E) for a
@@ -76,6 +77,7 @@ public:
         Empty,
         Isolated,
         Components,
+        VertexRuns,
         Edges,
         Vertices,
         MergeDegree2,
@@ -90,7 +92,7 @@ public:
     // goes back to the start only when nothing from there on works.
     struct Position {
         Stage stage = Stage::Empty;
-        std::size_t chunk = 0;  // Edges: the run length (0: all of the edges)
+        std::size_t chunk = 0;  // VertexRuns and Edges: the run length (0: the stage's first)
     };
 
     explicit ShrinkCandidates(PlanarGraph g);
@@ -105,6 +107,7 @@ private:
     // One step of each stage (step() dispatches on stage_).
     [[nodiscard]] std::optional<PlanarGraph> empty_step();
     [[nodiscard]] std::optional<PlanarGraph> components_step();
+    [[nodiscard]] std::optional<PlanarGraph> vertex_runs_step();
     [[nodiscard]] std::optional<PlanarGraph> edges_step();
     [[nodiscard]] std::optional<PlanarGraph> vertices_step();
     [[nodiscard]] std::optional<PlanarGraph> merge_degree2_step();
@@ -112,6 +115,8 @@ private:
     [[nodiscard]] std::optional<PlanarGraph> global_snaps_step();
     [[nodiscard]] std::optional<PlanarGraph> moves_step();
     void next_stage(Stage s);
+    void start_vertex_runs(std::size_t chunk);
+    void start_edges(std::size_t chunk);
 
     PlanarGraph g_;
     std::size_t fractions_ = 0;  // non-integer coordinates of g_

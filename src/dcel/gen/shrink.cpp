@@ -7,8 +7,12 @@
 //   2. every isolated vertex at once;
 //   3. each connected component alone, then each dropped (when there are
 //      several);
-//   4. runs of edges dropped: all of them, then halves, quarters, ..., single
-//      edges; then each vertex with its edges;
+//   4. in a graph of 64 vertices or more, blocks of vertices dropped with
+//      their edges: halves, quarters, ..., down to a sixteenth, so that it
+//      halves in a few steps even when a dropped edge would change its
+//      failure (leaving a vertex bare); then runs of edges dropped: all of
+//      them, then halves, quarters, ..., single edges; then each vertex
+//      with its edges;
 //   5. each vertex of degree 2 merged away: a-v-b becomes the edge a-b;
 //   6. each edge contracted: v is removed and its other edges go to u;
 //   7. global snaps towards small integers: exact ones first (a power-of-two
@@ -279,7 +283,7 @@ constexpr std::size_t kGlobalSnaps = 6;
 // is rounded (target 0 only), an integer one has both coordinates halved,
 // or x, or y. Nothing when the target does not apply or would not move p.
 std::optional<Point> moved_point(Point p, std::size_t target) {
-    Point to = p;
+    Point to;
     if (!is_integer(p.x) || !is_integer(p.y)) {
         if (target != 0) return std::nullopt;
         to = {std::round(p.x), std::round(p.y)};
@@ -302,7 +306,8 @@ ShrinkCandidates::ShrinkCandidates(PlanarGraph g, Position start)
       stage_(start.stage == Stage::Done ? Stage::Empty : start.stage),
       isolated_first_(stage_ > Stage::Isolated),
       chunk_(g_.edges.size()) {
-    if (stage_ == Stage::Edges && start.chunk != 0) chunk_ = std::min(start.chunk, chunk_);
+    if (stage_ == Stage::VertexRuns) start_vertex_runs(start.chunk);
+    if (stage_ == Stage::Edges) start_edges(start.chunk);
 }
 
 std::optional<PlanarGraph> ShrinkCandidates::next() {
@@ -314,7 +319,7 @@ std::optional<PlanarGraph> ShrinkCandidates::next() {
         }
     }
     for (;;) {
-        const Position here{stage_, stage_ == Stage::Edges ? chunk_ : 0};
+        const Position here{stage_, stage_ == Stage::Edges || stage_ == Stage::VertexRuns ? chunk_ : 0};
         std::optional<PlanarGraph> c = step();
         if (c) {
             last_ = here;
@@ -331,6 +336,7 @@ std::optional<PlanarGraph> ShrinkCandidates::step() {
         case Stage::Empty: return empty_step();
         case Stage::Isolated: next_stage(Stage::Components); return without_isolated_vertices(g_);
         case Stage::Components: return components_step();
+        case Stage::VertexRuns: return vertex_runs_step();
         case Stage::Edges: return edges_step();
         case Stage::Vertices: return vertices_step();
         case Stage::MergeDegree2: return merge_degree2_step();
@@ -357,7 +363,7 @@ std::optional<PlanarGraph> ShrinkCandidates::components_step() {
     const std::size_t n = g_.vertices.size();
     if (component_of_.empty() && n > 0) std::tie(component_of_, components_) = number_components(g_);
     if (components_ < 2 || index_ >= 2 * components_) {
-        next_stage(Stage::Edges);
+        start_vertex_runs(0);
         return std::nullopt;
     }
     const bool keep_only = index_ < components_;
@@ -365,6 +371,37 @@ std::optional<PlanarGraph> ShrinkCandidates::components_step() {
     ++index_;
     std::vector<char> drop(n, 0);
     for (Index v = 0; v < n; ++v) drop[v] = static_cast<char>((component_of_[v] == k) != keep_only);
+    return without_vertices(g_, drop);
+}
+
+// Blocks of chunk_ consecutive vertices dropped in turn, with their edges;
+// then blocks half as long, down to a sixteenth of the vertices. About 30
+// candidates in all, whatever the size; only for graphs of at least
+// kVertexRunsFrom vertices, where the edge runs after it may cost
+// thousands of candidates that change the failure (a dropped edge leaves a
+// bare vertex). A small graph shrinks as well without them, and its path to
+// small integer coordinates stays the one it was.
+std::optional<PlanarGraph> ShrinkCandidates::vertex_runs_step() {
+    constexpr std::size_t kVertexRunsFrom = 64;
+    const std::size_t n = g_.vertices.size();
+    const std::size_t smallest = std::max<std::size_t>(2, n / 16);
+    if (n < kVertexRunsFrom) {
+        start_edges(0);
+        return std::nullopt;
+    }
+    if (index_ >= n) {
+        chunk_ /= 2;
+        index_ = 0;
+    }
+    if (chunk_ < smallest) {
+        start_edges(0);
+        return std::nullopt;
+    }
+    const std::size_t begin = index_;
+    index_ += chunk_;
+    std::vector<char> drop(n, 0);
+    std::fill(drop.begin() + static_cast<std::ptrdiff_t>(begin),
+              drop.begin() + static_cast<std::ptrdiff_t>(std::min(n, begin + chunk_)), 1);
     return without_vertices(g_, drop);
 }
 
@@ -481,6 +518,19 @@ std::optional<PlanarGraph> ShrinkCandidates::moves_step() {
 void ShrinkCandidates::next_stage(Stage s) {
     stage_ = s;
     index_ = 0;
+}
+
+// The first block is half the vertices (or `chunk`, resuming, when smaller).
+void ShrinkCandidates::start_vertex_runs(std::size_t chunk) {
+    next_stage(Stage::VertexRuns);
+    const std::size_t half = g_.vertices.size() / 2;
+    chunk_ = chunk != 0 ? std::min(chunk, half) : half;
+}
+
+// The first run is every edge (or `chunk`, resuming, when smaller).
+void ShrinkCandidates::start_edges(std::size_t chunk) {
+    next_stage(Stage::Edges);
+    chunk_ = chunk != 0 ? std::min(chunk, g_.edges.size()) : g_.edges.size();
 }
 
 std::vector<PlanarGraph> shrink_candidates(const PlanarGraph& g) {

@@ -540,25 +540,25 @@ namespace {
 using Checker = CheckResult (*)(const DcelDump&);
 constexpr unsigned bit(Invariant i) { return 1U << static_cast<unsigned>(i); }
 struct Step {
-    Invariant invariant;
     Checker check;
+    Invariant invariant;
     unsigned needs;  // bits of the invariants that must hold first
 };
 constexpr unsigned kWalks = bit(Invariant::NextPrev) | bit(Invariant::NextOrigin);
 constexpr Step kSteps[] = {
-    {Invariant::References, check_references, 0},
-    {Invariant::Twin, check_twin, bit(Invariant::References)},
-    {Invariant::NextPrev, check_next_prev, bit(Invariant::References)},
-    {Invariant::NextOrigin, check_next_origin, bit(Invariant::Twin)},
-    {Invariant::FaceOnCycle, check_face_on_cycle, bit(Invariant::Twin)},
-    {Invariant::VertexOut, check_vertex_out, bit(Invariant::Twin)},
-    {Invariant::FaceRecords, check_face_records,
+    {check_references, Invariant::References, 0},
+    {check_twin, Invariant::Twin, bit(Invariant::References)},
+    {check_next_prev, Invariant::NextPrev, bit(Invariant::References)},
+    {check_next_origin, Invariant::NextOrigin, bit(Invariant::Twin)},
+    {check_face_on_cycle, Invariant::FaceOnCycle, bit(Invariant::Twin)},
+    {check_vertex_out, Invariant::VertexOut, bit(Invariant::Twin)},
+    {check_face_records, Invariant::FaceRecords,
      bit(Invariant::Twin) | bit(Invariant::NextPrev) | bit(Invariant::FaceOnCycle)},
-    {Invariant::IsolatedVertices, check_isolated_vertices, bit(Invariant::Twin)},
-    {Invariant::Embedding, check_embedding, bit(Invariant::Twin)},
-    {Invariant::Rotation, check_rotation, bit(Invariant::Embedding) | kWalks},
-    {Invariant::Orientation, check_orientation, bit(Invariant::Embedding) | kWalks | bit(Invariant::FaceRecords)},
-    {Invariant::HolePlacement, check_hole_placement,
+    {check_isolated_vertices, Invariant::IsolatedVertices, bit(Invariant::Twin)},
+    {check_embedding, Invariant::Embedding, bit(Invariant::Twin)},
+    {check_rotation, Invariant::Rotation, bit(Invariant::Embedding) | kWalks},
+    {check_orientation, Invariant::Orientation, bit(Invariant::Embedding) | kWalks | bit(Invariant::FaceRecords)},
+    {check_hole_placement, Invariant::HolePlacement,
      bit(Invariant::Rotation) | bit(Invariant::Orientation) | bit(Invariant::IsolatedVertices)},
 };
 
