@@ -1,7 +1,6 @@
 #include "dcel/diff/failure_class.hpp"
 
 #include <cctype>
-#include <ranges>
 #include <vector>
 
 namespace dcel::diff {
@@ -45,8 +44,10 @@ std::string meaningful_line(std::string_view text) {
         lines.push_back(line);
         begin = end + 1;
     }
-    for (const std::string_view line : std::ranges::reverse_view(lines)) {
-        if (!is_noise(line)) return std::string(trimmed(line));
+    // Last line first. (Not std::ranges::reverse_view: clang 14 cannot
+    // compile libstdc++ 12's ranges.)
+    for (std::size_t i = lines.size(); i-- > 0;) {
+        if (!is_noise(lines[i])) return std::string(trimmed(lines[i]));
     }
     return {};
 }
