@@ -9,7 +9,7 @@
 // UTF-8, parses with the library's JsonReader and gives back every field
 // (messages byte for byte); an answer that differs is drawn
 // (check/counterexample_svg.hpp) from its cycles and polygons as
-// `dcel diff --svg` prepares them (support/answer_drawing.hpp); validate()
+// `dcel diff --svg` prepares them (check/answer_drawing.hpp, which the diff engine calls); validate()
 // and validate_all() agree on a dump read. Every kind
 // the text's shape fits reads as that kind (`dcel diff` reads them without
 // a net), and under each of them and each of the eight convention
@@ -48,6 +48,7 @@
 
 #include "dcel/build.hpp"
 #include "dcel/check/answer.hpp"
+#include "dcel/check/answer_drawing.hpp"
 #include "dcel/check/counterexample_svg.hpp"
 #include "dcel/check/report.hpp"
 #include "dcel/error.hpp"
@@ -56,7 +57,6 @@
 #include "dcel/io/json_reader.hpp"
 #include "dcel/validate.hpp"
 #include "oracles/answer_meaning.hpp"
-#include "support/answer_drawing.hpp"
 #include "support/answer_plain.hpp"
 #include "support/answer_spellings.hpp"
 #include "support/fuzz_check.hpp"
@@ -207,8 +207,8 @@ void check_report(const Dcel& reference, const Report& report) {
 
 void draw(const PlanarGraph& g, const Dcel& reference, const check::Answer& a, const Conventions& c) {
     check::CounterexampleDrawing drawing{.graph = &g, .reference = &reference};
-    drawing.answer_cycles = drawn_cycles(a, c);
-    drawing.answer_polygons = drawn_regions(a, reference, c);
+    drawing.answer_cycles = check::drawn_cycles(a, c);
+    drawing.answer_polygons = check::drawn_regions(a, reference, c);
     const std::string svg = check::render_counterexample_svg(drawing);
     FUZZ_CHECK(svg.find("<svg") != std::string::npos && valid_utf8(svg), "a broken picture");
 }

@@ -19,6 +19,7 @@
 #include "dcel/io/graph_json.hpp"
 #include "dcel/validate.hpp"
 #include "oracles/brute_force.hpp"
+#include "support/check_helpers.hpp"
 #include "support/graph_case.hpp"
 
 namespace dcel::props {
@@ -62,15 +63,7 @@ void check_named_defect(const InvalidInput& e, const Defects& found) {
 // only the points and the twin pairs), as an InvalidInput: the kind from
 // the words of the message (build()'s words), the edges from the half-edges.
 std::optional<InvalidInput> embedding_refusal(const PlanarGraph& g) {
-    DcelDump d;
-    d.vertices = g.vertices;
-    for (Index k = 0; k < g.edges.size(); ++k) {
-        const HalfEdgeId h(2 * k);
-        const HalfEdgeId t(2 * k + 1);
-        d.half_edges.push_back({g.edges[k].u, t, t, t, FaceId(0)});
-        d.half_edges.push_back({g.edges[k].v, h, h, h, FaceId(0)});
-    }
-    d.faces.push_back({});
+    const DcelDump d = test_support::edges_only_dump(g);
     const CheckResult v = check_embedding(d);
     if (!v) return std::nullopt;
     RC_ASSERT(v->invariant == Invariant::Embedding);

@@ -10,6 +10,7 @@
 #include "dcel/build.hpp"
 #include "dcel/error.hpp"
 #include "dcel/validate.hpp"
+#include "support/check_helpers.hpp"
 
 namespace dcel {
 namespace {
@@ -170,22 +171,7 @@ TEST(Validate, Embedding) {
     expect_violation(d, Invariant::Embedding, "vertex 7 (5, 0) lies inside");
 }
 
-// A dump that only carries a graph: edge k is half-edges 2k (from u) and
-// 2k + 1, next = twin, one face. Enough for check_embedding, which looks at
-// the points and the twin pairs alone (the underlying graph then numbers its
-// edges as g does).
-DcelDump edges_only_dump(const PlanarGraph& g) {
-    DcelDump d;
-    d.vertices = g.vertices;
-    for (Index k = 0; k < g.edges.size(); ++k) {
-        const HalfEdgeId h(2 * k);
-        const HalfEdgeId t(2 * k + 1);
-        d.half_edges.push_back({g.edges[k].u, t, t, t, FaceId(0)});
-        d.half_edges.push_back({g.edges[k].v, h, h, h, FaceId(0)});
-    }
-    d.faces.push_back({});
-    return d;
-}
+using test_support::edges_only_dump;
 
 PlanarGraph graph_of(std::vector<Point> points, const std::vector<std::pair<Index, Index>>& edges) {
     PlanarGraph g;

@@ -90,7 +90,19 @@ def mutate(target, action):
         target.insert(0, object())
 
 
-class Mutator:
+class HostileNumber:
+    """A number whose __float__ and __index__ first do what _act() does."""
+
+    def __float__(self):
+        self._act()
+        return float(self.value)
+
+    def __index__(self):
+        self._act()
+        return int(self.value)
+
+
+class Mutator(HostileNumber):
     """A number whose __float__, __index__, tolist() and __repr__ first change
     the given lists (typically the ones being read), then return its value or
     raise; only while armed (so that Hypothesis can show it)."""
@@ -107,14 +119,6 @@ class Mutator:
             mutate(target, self.action)
         if self.raises:
             raise ZeroDivisionError("raised by a hostile number")
-
-    def __float__(self):
-        self._act()
-        return float(self.value)
-
-    def __index__(self):
-        self._act()
-        return int(self.value)
 
     def tolist(self):
         self._act()
@@ -196,7 +200,7 @@ def child_lists_changed_while_read(graph, call):
         Mutator.armed = False
 
 
-class Editor:
+class Editor(HostileNumber):
     """A number whose __float__ and __index__ edit the given Dcel (the one being called) first."""
 
     armed = False
@@ -221,14 +225,6 @@ class Editor:
                     self.view = None
             except ValueError:
                 pass
-
-    def __float__(self):
-        self._act()
-        return float(self.value)
-
-    def __index__(self):
-        self._act()
-        return int(self.value)
 
 
 EDITOR_EDITS = ("remove_edge", "add_vertex", "remove_vertex", "view", "drop_view")

@@ -13,6 +13,7 @@
 #include "dcel/check/compare.hpp"
 #include "dcel/dcel.hpp"
 #include "dcel/dump.hpp"
+#include "dcel/graph.hpp"
 #include "oracles/shapes.hpp"
 
 namespace dcel::test_support {
@@ -175,5 +176,22 @@ inline const check::Difference* find_kind(const check::Report& r, check::Differe
 
 // A cycle's canonical form (its smallest rotation), to compare cycles as cycles.
 using oracle::canonical;
+
+// A dump that only carries a graph: edge k is half-edges 2k (from u) and
+// 2k + 1, next = twin, one face. Enough for validate()'s check_embedding,
+// which looks at the points and the twin pairs alone (the underlying graph
+// then numbers its edges as g does).
+inline DcelDump edges_only_dump(const PlanarGraph& g) {
+    DcelDump d;
+    d.vertices = g.vertices;
+    for (Index k = 0; k < g.edges.size(); ++k) {
+        const HalfEdgeId h(2 * k);
+        const HalfEdgeId t(2 * k + 1);
+        d.half_edges.push_back({g.edges[k].u, t, t, t, FaceId(0)});
+        d.half_edges.push_back({g.edges[k].v, h, h, h, FaceId(0)});
+    }
+    d.faces.push_back({});
+    return d;
+}
 
 }  // namespace dcel::test_support

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "dcel/check/answer_drawing.hpp"
 #include "dcel/diff/failure_class.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
@@ -41,83 +42,6 @@ Outcome failed(FailureKind kind, std::string what, const ProcessResult& run) {
     o.what = std::move(what);
     o.run = run;
     return o;
-}
-
-constexpr std::size_t kMaxDrawnIds = 100000;  // a drawing of more says nothing; keep memory small
-
-// A dump's next-cycles as vertex cycles, where its references allow a walk.
-std::vector<std::vector<Index>> dump_cycles(const DcelDump& d) {
-    std::vector<std::vector<Index>> out;
-    const std::size_t n = d.half_edges.size();
-    if (n > kMaxDrawnIds) return out;
-    std::vector<char> seen(n, 0);
-    for (std::size_t h = 0; h < n; ++h) {
-        std::vector<Index> cycle;
-        for (std::size_t x = h, steps = 0; x < n && seen[x] == 0 && steps < n; ++steps) {
-            seen[x] = 1;
-            if (d.half_edges[x].origin.is_null()) break;
-            cycle.push_back(d.half_edges[x].origin.index());
-            x = d.half_edges[x].next.index();
-        }
-        if (!cycle.empty()) out.push_back(std::move(cycle));
-    }
-    return out;
-}
-
-// Polygons and rings by vertex id (coordinates matched exactly; a point that
-// is no vertex leaves its ring out).
-std::vector<std::vector<std::vector<Index>>> regions_of(const check::Answer& a, const Dcel& reference,
-                                                        const check::Conventions& c) {
-    std::vector<std::vector<std::vector<Index>>> out;
-    const check::RegionAnswer& r = a.regions;
-    if (a.kind != check::AnswerKind::Polygons && a.kind != check::AnswerKind::Rings &&
-        a.kind != check::AnswerKind::EvenOdd) {
-        return out;
-    }
-    if (r.ids.size() + r.points.size() > kMaxDrawnIds) return out;
-    auto vertex_at = [&](Point p) {
-        for (Index v = 0; v < reference.num_vertices(); ++v) {
-            if (reference.point(VertexId(v)) == p) return v;
-        }
-        return kNoIndex;
-    };
-    for (std::size_t p = 0; p < r.polygon_count(); ++p) {
-        std::vector<std::vector<Index>> polygon;
-        for (std::size_t k = r.polygon_begin[p]; k < r.polygon_begin[p + 1]; ++k) {
-            std::vector<Index> ring;
-            bool known = true;
-            for (std::size_t i = r.ring_begin[k]; i < r.ring_begin[k + 1]; ++i) {
-                Index v = r.by_points ? vertex_at(r.points[i]) : r.ids[i];
-                if (!r.by_points && c.one_based) v = v == 0 ? kNoIndex : v - 1;
-                known = known && v < reference.num_vertices();
-                ring.push_back(v);
-            }
-            if (ring.size() >= 2 && ring.front() == ring.back()) ring.pop_back();
-            if (known) polygon.push_back(std::move(ring));
-        }
-        if (!polygon.empty()) out.push_back(std::move(polygon));
-    }
-    return out;
-}
-
-// The answer's cycles, for drawing: faces as given (1-based ids shifted, a
-// repeated first vertex dropped, reversed for faces on the right), a dump's
-// next-cycles.
-std::vector<std::vector<Index>> cycles_of(const check::Answer& a, const check::Conventions& c) {
-    std::vector<std::vector<Index>> out;
-    if (a.kind == check::AnswerKind::Dump) return dump_cycles(a.dump);
-    if (a.kind != check::AnswerKind::Faces || a.cycles.ids.size() > kMaxDrawnIds) return out;
-    for (std::size_t i = 0; i < a.cycles.size(); ++i) {
-        const std::span<const Index> given = a.cycles[i];
-        std::vector<Index> vs(given.begin(), given.end());
-        if (c.one_based) {
-            for (Index& v : vs) v = v == 0 ? kNoIndex : v - 1;
-        }
-        if (vs.size() >= 2 && vs.front() == vs.back()) vs.pop_back();
-        if (c.face_on_right && !vs.empty()) std::reverse(vs.begin() + 1, vs.end());
-        out.push_back(std::move(vs));
-    }
-    return out;
 }
 
 std::string kinds_text(const std::vector<check::AnswerKind>& kinds) {
@@ -199,8 +123,8 @@ Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimi
         worst.kind = FailureKind::WrongAnswer;
         worst.answer_kind = order[i];
         worst.what = report.differences.front().message;
-        worst.answer_cycles = cycles_of(as, judging.options.conventions);
-        worst.answer_polygons = regions_of(as, reference, judging.options.conventions);
+        worst.answer_cycles = check::drawn_cycles(as, judging.options.conventions);
+        worst.answer_polygons = check::drawn_regions(as, reference, judging.options.conventions);
         worst.report = std::move(report);
     }
     if (!given && (order.size() > 1 || answer.detected_from.rfind("an object with", 0) != 0)) {

@@ -1,22 +1,15 @@
-// An answer as the counterexample picture takes it (check/counterexample_svg.hpp):
-// its cycles and its polygons by vertex id, prepared exactly as `dcel diff`
-// prepares them for --svg (src/cli/diff_outcome.cpp, cycles_of and
-// regions_of, which the CLI keeps to itself), so that the answer harness
-// draws what a wrong answer would make `dcel diff` draw: ids out of range
-// and, with --one-based, a 0 (kNoIndex) left in the cycles.
-#pragma once
+#include "dcel/check/answer_drawing.hpp"
 
 #include <algorithm>
-#include <vector>
+#include <span>
 
-#include "dcel/check/answer.hpp"
-#include "dcel/dcel.hpp"
+namespace dcel::check {
+namespace {
 
-namespace dcel::fuzz {
+constexpr std::size_t kMaxDrawnIds = 100000;  // a drawing of more says nothing; keep memory small
 
-inline constexpr std::size_t kMaxDrawnIds = 100000;
-
-inline std::vector<std::vector<Index>> drawn_dump_cycles(const DcelDump& d) {
+// A dump's next-cycles as vertex cycles, where its references allow a walk.
+std::vector<std::vector<Index>> dump_cycles(const DcelDump& d) {
     std::vector<std::vector<Index>> out;
     const std::size_t n = d.half_edges.size();
     if (n > kMaxDrawnIds) return out;
@@ -34,11 +27,16 @@ inline std::vector<std::vector<Index>> drawn_dump_cycles(const DcelDump& d) {
     return out;
 }
 
-inline std::vector<std::vector<std::vector<Index>>> drawn_regions(const check::Answer& a, const Dcel& reference,
-                                                                  const check::Conventions& c) {
+}  // namespace
+
+std::vector<std::vector<std::vector<Index>>> drawn_regions(const Answer& a, const Dcel& reference,
+                                                           const Conventions& c) {
     std::vector<std::vector<std::vector<Index>>> out;
-    const check::RegionAnswer& r = a.regions;
-    if (a.kind != check::AnswerKind::Polygons && a.kind != check::AnswerKind::Rings) return out;
+    const RegionAnswer& r = a.regions;
+    if (a.kind != AnswerKind::Polygons && a.kind != AnswerKind::Rings &&
+        a.kind != AnswerKind::EvenOdd) {
+        return out;
+    }
     if (r.ids.size() + r.points.size() > kMaxDrawnIds) return out;
     auto vertex_at = [&](Point p) {
         for (Index v = 0; v < reference.num_vertices(); ++v) {
@@ -65,10 +63,10 @@ inline std::vector<std::vector<std::vector<Index>>> drawn_regions(const check::A
     return out;
 }
 
-inline std::vector<std::vector<Index>> drawn_cycles(const check::Answer& a, const check::Conventions& c) {
+std::vector<std::vector<Index>> drawn_cycles(const Answer& a, const Conventions& c) {
     std::vector<std::vector<Index>> out;
-    if (a.kind == check::AnswerKind::Dump) return drawn_dump_cycles(a.dump);
-    if (a.kind != check::AnswerKind::Faces || a.cycles.ids.size() > kMaxDrawnIds) return out;
+    if (a.kind == AnswerKind::Dump) return dump_cycles(a.dump);
+    if (a.kind != AnswerKind::Faces || a.cycles.ids.size() > kMaxDrawnIds) return out;
     for (std::size_t i = 0; i < a.cycles.size(); ++i) {
         const std::span<const Index> given = a.cycles[i];
         std::vector<Index> vs(given.begin(), given.end());
@@ -82,4 +80,4 @@ inline std::vector<std::vector<Index>> drawn_cycles(const check::Answer& a, cons
     return out;
 }
 
-}  // namespace dcel::fuzz
+}  // namespace dcel::check
