@@ -44,7 +44,7 @@ bool literal_is_integer(std::string_view s) {
 }
 
 // A SAX handler for nlohmann::json::sax_parse that builds nothing: it
-// records the nesting depth and the keys of a top-level object, so that
+// records the nesting depth and whether an object repeats a key, so that
 // documents nested too deep for a tree are judged without one.
 class FactsHandler {
 public:
@@ -62,12 +62,18 @@ public:
     bool binary(Binary&) {  // a template: older nlohmann versions have no binary type
         return true;
     }
-    bool start_object(std::size_t) { return open(); }
+    bool start_object(std::size_t) {
+        keys_.emplace_back();
+        return open();
+    }
     bool key(Json::string_t& k) {
-        if (depth_ == 1 && !top_keys_.insert(k).second) facts_.duplicate_top_keys.push_back(k);
+        if (!keys_.back().insert(k).second) facts_.duplicate_key = true;
         return true;
     }
-    bool end_object() { return close(); }
+    bool end_object() {
+        keys_.pop_back();
+        return close();
+    }
     bool start_array(std::size_t) { return open(); }
     bool end_array() { return close(); }
     template <class Exception>
@@ -88,15 +94,10 @@ private:
     }
     JsonFacts& facts_;
     std::size_t depth_ = 0;
-    std::set<std::string> top_keys_;
+    std::vector<std::set<std::string>> keys_;  // of each object open, innermost last
 };
 
 Json tree(std::string_view text) { return Json::parse(text.begin(), text.end(), nullptr, false); }
-
-bool twice(const JsonFacts& facts, const std::string& key) {
-    return std::find(facts.duplicate_top_keys.begin(), facts.duplicate_top_keys.end(), key) !=
-           facts.duplicate_top_keys.end();
-}
 
 std::optional<double> coordinate(const Json& v) {
     if (v.is_number_unsigned()) return static_cast<double>(v.get<std::uint64_t>());
@@ -207,12 +208,12 @@ JsonFacts json_facts(std::string_view text) {
     return facts;
 }
 
-std::optional<PlanarGraph> expected_graph(std::string_view text, const JsonFacts& facts) {
+std::optional<PlanarGraph> expected_graph(std::string_view text) {
     const Json j = tree(text);
     std::optional<std::vector<Point>> vs;
     std::optional<std::vector<GraphEdge>> es;
     if (j.is_object()) {
-        if (!j.contains("vertices") || !j.contains("edges") || twice(facts, "vertices") || twice(facts, "edges")) {
+        if (!j.contains("vertices") || !j.contains("edges")) {
             return std::nullopt;
         }
         vs = points(j["vertices"]);
@@ -227,10 +228,10 @@ std::optional<PlanarGraph> expected_graph(std::string_view text, const JsonFacts
 
 std::optional<std::vector<Point>> expected_points(std::string_view text) { return points(tree(text)); }
 
-std::optional<std::vector<std::vector<Index>>> expected_faces(std::string_view text, const JsonFacts& facts) {
+std::optional<std::vector<std::vector<Index>>> expected_faces(std::string_view text) {
     const Json j = tree(text);
     if (j.is_object()) {
-        if (!j.contains("faces") || twice(facts, "faces")) return std::nullopt;
+        if (!j.contains("faces")) return std::nullopt;
         return cycles(j["faces"]);
     }
     return cycles(j);
