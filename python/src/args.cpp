@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "binding.hpp"
+#include "dcel/core/utf8.hpp"
 #include "dcel/error.hpp"
 
 namespace dcel::python {
@@ -14,24 +15,6 @@ namespace {
 constexpr std::size_t kShownChars = 60;     // of a value's repr
 constexpr std::size_t kReasonChars = 200;   // of an error's message
 constexpr std::size_t kLargeIntBits = 128;  // longer ints are shown by their size
-
-void append_utf8(std::string& out, Py_UCS4 c) {
-    if (c < 0x80) {
-        out += static_cast<char>(c);
-    } else if (c < 0x800) {
-        out += static_cast<char>(0xC0 | (c >> 6));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-        out += static_cast<char>(0xE0 | (c >> 12));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (c >> 18));
-        out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (c & 0x3F));
-    }
-}
 
 // Python's escape of an unprintable character: \n, \x1b, \ud800, \U000e0001.
 std::string escape(Py_UCS4 c) {
@@ -63,7 +46,7 @@ std::string printable(PyObject* s, std::size_t max_chars) {
         if (static_cast<std::size_t>(i) == max_chars) return out + "...";
         const Py_UCS4 c = PyUnicode_READ_CHAR(s, i);
         if (Py_UNICODE_ISPRINTABLE(c)) {
-            append_utf8(out, c);
+            detail::append_utf8(out, c);
         } else {
             out += escape(c);
         }

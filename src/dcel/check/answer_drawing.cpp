@@ -29,12 +29,10 @@ std::vector<std::vector<Index>> dump_cycles(const DcelDump& d) {
 
 }  // namespace
 
-std::vector<std::vector<std::vector<Index>>> drawn_regions(const Answer& a, const Dcel& reference,
-                                                           const Conventions& c) {
+std::vector<std::vector<std::vector<Index>>> drawn_regions(const Answer& a, const Dcel& reference, const Conventions& c) {
     std::vector<std::vector<std::vector<Index>>> out;
     const RegionAnswer& r = a.regions;
-    if (a.kind != AnswerKind::Polygons && a.kind != AnswerKind::Rings &&
-        a.kind != AnswerKind::EvenOdd) {
+    if (a.kind != AnswerKind::Polygons && a.kind != AnswerKind::Rings && a.kind != AnswerKind::EvenOdd) {
         return out;
     }
     if (r.ids.size() + r.points.size() > kMaxDrawnIds) return out;

@@ -20,6 +20,6 @@ namespace dcel::check {
 // Polygons and rings by vertex id (coordinates matched exactly; a ring with
 // a point that is no vertex, or an id out of range, is left out).
 [[nodiscard]] std::vector<std::vector<std::vector<Index>>> drawn_regions(const Answer& a, const Dcel& reference,
-                                                                       const Conventions& c);
+                                                                         const Conventions& c);
 
 }  // namespace dcel::check

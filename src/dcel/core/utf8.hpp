@@ -1,8 +1,11 @@
-// The one UTF-8 decoder: the JSON reader checks its strings with it, and the
-// message formatting (format.hpp) escapes what it cannot vouch for.
+// The one UTF-8 decoder and encoder: the JSON reader checks its strings with
+// the decoder and writes \u escapes with the encoder, the message formatting
+// (format.hpp) escapes what the decoder cannot vouch for, and the Python
+// binding writes a str's code points with the encoder.
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <string_view>
 
 namespace dcel::detail {
@@ -45,6 +48,26 @@ inline std::size_t utf8_sequence(std::string_view s, std::size_t i, char32_t* co
         *code_point = cp;
     }
     return len;
+}
+
+// Code point cp (at most U+10FFFF) in UTF-8, appended to out. A surrogate
+// is written as its three bytes: callers that must not write one check first.
+inline void append_utf8(std::string& out, char32_t cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xC0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xE0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (cp & 0x3F));
+    }
 }
 
 }  // namespace dcel::detail
