@@ -15,12 +15,12 @@ digests=$2
 measure() {
   for family in random-segments triangulation grid-with-holes nested-polygons tree comb star collinear-chain components near-degenerate; do
     for n in 2 5 40 200; do
-      h=$(for seed in 0 1 2 3 4 5; do "$dcel" gen --family "$family" --seed "$seed" --vertices "$n"; done | sha256sum | cut -c1-16)
+      h=$(for seed in 0 1 2; do "$dcel" gen --family "$family" --seed "$seed" --vertices "$n"; done | sha256sum | cut -c1-16)
       echo "gen $family $n $h"
     done
   done
-  h=$(for c in $(seq 0 3 600); do "$dcel" diff --print-case "$c" --seed 3; done | sha256sum | cut -c1-16)
-  echo "print-case 0..600/3 seed 3 $h"
+  h=$(for c in $(seq 0 6 600); do "$dcel" diff --print-case "$c" --seed 3; done | sha256sum | cut -c1-16)
+  echo "print-case 0..600/6 seed 3 $h"
 }
 if [ "${3:-}" = "--record" ]; then
   measure >"$digests"

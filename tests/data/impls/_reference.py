@@ -5,11 +5,16 @@ import json
 import os
 import subprocess
 
+# In the sanitized build this CLI is started once per case and per shrink
+# candidate: its leak check at exit (a third of a start there) is left to the
+# CLI's own tests, which run `dcel faces --answer` with it.
+_ENV = dict(os.environ, ASAN_OPTIONS=os.environ.get("ASAN_OPTIONS", "") + ":detect_leaks=0")
+
 
 def answer(text, kind):
     """The reference's answer of `kind` (faces, dump, polygons, rings), parsed."""
     out = subprocess.run([os.environ["DCEL_CLI"], "faces", "--answer", kind, "-"], input=text.encode(),
-                         stdout=subprocess.PIPE, check=True).stdout
+                         stdout=subprocess.PIPE, env=_ENV, check=True).stdout
     return json.loads(out)
 
 
