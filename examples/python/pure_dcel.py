@@ -21,6 +21,11 @@ bug= (or the environment variable DCEL_EXAMPLE_BUG) plants one bug:
     "ccw"       next(u->v) takes the neighbour just counterclockwise of v->u
     "isolated"  out(v) is taken as the first half-edge leaving v, which an
                 isolated vertex does not have: IndexError
+    "tiny"      coordinates below 1e-200 in magnitude read as 0, as a
+                "snap tiny values" tolerance would
+    "recursive" a boundary cycle walked by a recursion per half-edge, which
+                passes Python's recursion limit on a cycle of about a
+                thousand half-edges: RecursionError
 """
 import math
 import os
@@ -53,6 +58,8 @@ def _orient(a, b, c):
 class PureDcel:
     def __init__(self, vertices, edges, bug=None):
         self.bug = os.environ.get("DCEL_EXAMPLE_BUG", "") if bug is None else bug
+        if self.bug == "tiny":
+            vertices = [[c if abs(c) >= 1e-200 else 0.0 for c in map(float, p)] for p in vertices]
         self.points = [(Fraction(x), Fraction(y)) for x, y in vertices]
         self.origin = [w for u, v in edges for w in (int(u), int(v))]
         self.twin = [h ^ 1 for h in range(len(self.origin))]
@@ -88,6 +95,10 @@ class PureDcel:
             self.out = [ring[0] if ring else NONE for ring in rings]
 
     def _cycle(self, h):
+        if self.bug == "recursive":
+            def walk(x):
+                return [x] if self.next[x] == h else [x] + walk(self.next[x])
+            return walk(h)
         cycle = [h]
         while self.next[cycle[-1]] != h:
             cycle.append(self.next[cycle[-1]])

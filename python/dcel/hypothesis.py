@@ -10,10 +10,17 @@
 planar_graphs() draws from the library's own generators (the ones `dcel gen`,
 `dcel diff` and the C++ property tests use) with a seed that Hypothesis
 draws, so Hypothesis controls every graph and replays it from its database.
-Shrinking: the size is drawn first, then each vertex and each edge is kept or
-dropped by a draw of its own, so Hypothesis shrinks a failure by dropping
-vertices and edges one at a time (a subgraph of a valid graph is valid) and
-by asking for smaller sizes.
+Most graphs are small (at most 40 vertices, some dropped); about one in 8
+is large (up to max_vertices, 1000 by default) with one long boundary cycle,
+for the bugs that only size shows (a recursion per half-edge, a quadratic
+step). Shrinking: every draw whose count is fixed comes first, always the
+same ones in the same order (whether the graph is large, both sizes, both
+families, the seed, the scale), then one draw per vertex and per edge of the
+small graph, which keeps or drops it. So Hypothesis shrinks a failure by
+asking for a small graph instead of a large one, for smaller sizes and no
+scaling, each without the other draws being read as something else, and by
+dropping vertices and edges one at a time (a subgraph of a valid graph is
+valid).
 """
 from __future__ import annotations
 
@@ -53,6 +60,28 @@ _INTEGER_LIMIT = 2.0**30
 _DEGENERATE = "near-degenerate"
 _DEGENERATE_SHARE = 2
 
+# About one graph in _LARGE_ONE_IN is large when max_vertices is above
+# _SMALL_VERTICES: its size is the larger of two drawn from min_vertices to
+# max_vertices (so three in four have more than half of max_vertices), its
+# family one of _LONG_CYCLE_FAMILIES among those asked for (a tree, star,
+# comb or chain of n vertices has a boundary cycle of about 2n half-edges),
+# and it keeps every vertex and edge. More large graphs leave fewer small
+# ones for the bugs that small graphs show (one in 5, in an earlier layout of
+# the draws: the atan2 bug of the planted-bug tests unfound on 2 of 10
+# seeds). The others have at most _SMALL_VERTICES vertices.
+_LARGE_ONE_IN = 8
+_SMALL_VERTICES = 40
+_LONG_CYCLE_FAMILIES = ("tree", "star", "comb", "collinear-chain")
+
+# With coordinates="any", a small graph is scaled by 2**k, k drawn from
+# these: tiny (about 1e-211 for a coordinate of 1, below the 1e-200 of a
+# "snap tiny values" tolerance) or huge (about 1e211, whose products
+# overflow doubles) half of the time. No scaling is first, so the shrinker
+# goes back to it; a graph that the scaling would round (subnormals) stays
+# as it is. Drawn by Hypothesis' mutator, the share varies much from seed to
+# seed (2 to 29 tiny graphs in 100 examples with a share of one in 6).
+_SCALES = (0, 0, -700, 700)
+
 # How often a drawn element is dropped while generating (1 in _KEEP_RANGE + 1);
 # shrinking drops more.
 _KEEP_RANGE = 15
@@ -60,7 +89,7 @@ _KEEP_RANGE = 15
 
 def planar_graphs(
     families: Optional[Sequence[str]] = None,
-    max_vertices: int = 40,
+    max_vertices: int = 1000,
     coordinates: str = "any",
     min_vertices: int = 0,
 ) -> st.SearchStrategy[Graph]:
@@ -68,9 +97,16 @@ def planar_graphs(
 
     families: names from dcel.families() (default: all of them, or all but
     "near-degenerate" when coordinates="integers"). min_vertices,
-    max_vertices: the range of the size asked of the generator, which makes
-    exactly that many vertices; about one vertex and one edge in 16 is then
-    dropped. coordinates: "any" or "integers" (see COORDINATES). Every graph
+    max_vertices: no graph has more than max_vertices vertices. Most graphs
+    are small: the generator is asked for min_vertices to
+    min(max_vertices, 40) vertices (it makes exactly that many), and about
+    one vertex and one edge in 16 is then dropped; with coordinates="any",
+    half of them are then scaled by 2**-700 or 2**700 (exactly). When
+    max_vertices is above 40, about one graph in 8 is large instead: up to
+    max_vertices vertices (most above half of it), all kept, unscaled, from
+    the families asked for whose graphs have one long boundary cycle (tree,
+    star, comb, collinear-chain; any of those asked for when there are
+    none). coordinates: "any" or "integers" (see COORDINATES). Every graph
     is one that dcel.build() accepts.
     """
     known = _dcel.families()
@@ -97,17 +133,42 @@ def planar_graphs(
     if _DEGENERATE in families and len(families) > 1:
         others = len(families) - 1
         families += [_DEGENERATE] * max(0, round(others / (_DEGENERATE_SHARE - 1)) - 1)
-    return _graphs(families, min_vertices, max_vertices, coordinates)
+    long_cycles = [f for f in families if f in _LONG_CYCLE_FAMILIES] or families
+    return _graphs(families, min_vertices, max_vertices, coordinates, long_cycles)
 
 
 @st.composite
-def _graphs(draw: Any, families: Sequence[str], min_vertices: int, max_vertices: int, coordinates: str) -> Graph:
-    size = draw(st.integers(min_vertices, max_vertices))  # first: the shrinker lowers it first
+def _graphs(draw: Any, families: Sequence[str], min_vertices: int, max_vertices: int, coordinates: str,
+            long_cycles: Sequence[str]) -> Graph:
+    # Every draw whose count is fixed comes first, in a fixed order whatever
+    # the earlier ones gave, so that the shrinker can lower the flag, a size,
+    # a family or the scale without the draws after it being read as
+    # something else.
+    small_max = max(min_vertices, min(max_vertices, _SMALL_VERTICES))
+    large = max_vertices > small_max and draw(st.integers(0, _LARGE_ONE_IN - 1)) == _LARGE_ONE_IN - 1
+    small_size = draw(st.integers(min_vertices, small_max))
+    if max_vertices > small_max:
+        large_size = max(draw(st.integers(min_vertices, max_vertices)), draw(st.integers(min_vertices, max_vertices)))
     family = draw(st.sampled_from(families))
+    if max_vertices > small_max:
+        long_family = draw(st.sampled_from(long_cycles))
     seed = draw(st.integers(0, 2**64 - 1))
-    g = _dcel.generate(family, seed, size)
+    scale = draw(st.sampled_from(_SCALES)) if coordinates == "any" else 0
+    # Last, the draws whose count depends on the graph: one per vertex and
+    # edge of the small graph, made even when the large graph is used (it
+    # keeps all of its own), so that they are in place when the flag shrinks.
+    # A large graph is not scaled: a failure that needs both a scale and a
+    # large graph could only shrink by the large graph's size and seed, which
+    # does not reach a few vertices (measured: stuck at 8 vertices on 3 of 10
+    # seeds of the tiny-coordinates bug), while a small graph scaled finds it.
+    g = _dcel.generate(family, seed, small_size)
     keep = [draw(st.integers(0, _KEEP_RANGE)) != 0 for _ in g.vertices]
     g = _subgraph(g, keep, [draw(st.integers(0, _KEEP_RANGE)) != 0 for _ in g.edges])
+    if large:
+        g = _dcel.generate(long_family, seed, large_size)
+    elif scale:
+        scaled = _dcel.transform(g, "scale-pow2", scale)  # None when a coordinate would round or overflow
+        g = scaled if scaled is not None else g
     if coordinates == "integers":
         scaled = _as_integers(g)
         assume(scaled is not None)
