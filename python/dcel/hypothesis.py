@@ -145,12 +145,13 @@ def _graphs(draw: Any, families: Sequence[str], min_vertices: int, max_vertices:
     # a family or the scale without the draws after it being read as
     # something else.
     small_max = max(min_vertices, min(max_vertices, _SMALL_VERTICES))
-    large = max_vertices > small_max and draw(st.integers(0, _LARGE_ONE_IN - 1)) == _LARGE_ONE_IN - 1
+    may_be_large = max_vertices > small_max
+    large = may_be_large and draw(st.integers(0, _LARGE_ONE_IN - 1)) == _LARGE_ONE_IN - 1
     small_size = draw(st.integers(min_vertices, small_max))
-    if max_vertices > small_max:
+    if may_be_large:
         large_size = max(draw(st.integers(min_vertices, max_vertices)), draw(st.integers(min_vertices, max_vertices)))
     family = draw(st.sampled_from(families))
-    if max_vertices > small_max:
+    if may_be_large:
         long_family = draw(st.sampled_from(long_cycles))
     seed = draw(st.integers(0, 2**64 - 1))
     scale = draw(st.sampled_from(_SCALES)) if coordinates == "any" else 0

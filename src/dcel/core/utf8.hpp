@@ -1,5 +1,5 @@
 // The one UTF-8 decoder and encoder: the JSON reader checks its strings with
-// the decoder and writes \u escapes with the encoder, the message formatting
+// the decoder and turns \u escapes into UTF-8 with the encoder, the message formatting
 // (format.hpp) escapes what the decoder cannot vouch for, and the Python
 // binding writes a str's code points with the encoder.
 #pragma once
