@@ -83,6 +83,20 @@ TEST(CheckTestingSeeds, IsolatedVertexCrashIsCaughtOnEverySeed) {
     EXPECT_EQ(run.missing, "");
 }
 
+TEST(CheckTestingSeeds, TinyCoordinatesReadAsZeroAreCaughtOnEverySeed) {
+    const SeedRun run = run_seeds(
+        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::tiny_faces, o); }, {});
+    report("coordinates below 1e-200 read as 0 (faces)", run);
+    EXPECT_EQ(run.caught, kSeeds);
+}
+
+TEST(CheckTestingSeeds, HugeCoordinatesClampedAreCaughtOnEverySeed) {
+    const SeedRun run = run_seeds(
+        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::huge_faces, o); }, {});
+    report("coordinates clamped to 1e200 (faces)", run);
+    EXPECT_EQ(run.caught, kSeeds);
+}
+
 TEST(CheckTestingSeeds, HoleInTheWrongFaceIsCaughtOnEverySeed) {
     const SeedRun run = run_seeds(
         [](const CheckOptions& o) { return dcel::testing::dump_solver_agrees(planted::outer_hole_dump, o); },

@@ -36,8 +36,13 @@ std::vector<std::vector<Index>> rings(const PlanarGraph& g, Order order) {
     for (std::size_t v = 0; v < around.size(); ++v) {
         const Point c = g.vertices[v];
         if (order == Order::Exact) {
+            // An edge of length zero (only tiny_faces makes one) sorts first,
+            // so that the order stays a strict weak order for std::sort.
             std::sort(around[v].begin(), around[v].end(), [&](Index a, Index b) {
-                return angle_order(c, g.vertices[target(g, a)], g.vertices[target(g, b)]) < 0;
+                const Point pa = g.vertices[target(g, a)], pb = g.vertices[target(g, b)];
+                const bool za = pa.x == c.x && pa.y == c.y, zb = pb.x == c.x && pb.y == c.y;
+                if (za || zb) return za && !zb;
+                return angle_order(c, pa, pb) < 0;
             });
         } else {
             // The textbook way: an angle per direction, in floating point.
@@ -205,6 +210,24 @@ FacesAnswer isolated_crash_faces(const PlanarGraph& g) {
     std::vector<Index> first_edge;
     for (const auto& ring : around) first_edge.push_back(ring.at(0));  // the bug: no edge at an isolated vertex
     return as_vertices(g, orbits(next_of(g, around, Turn::Clockwise)));
+}
+
+FacesAnswer tiny_faces(const PlanarGraph& g) {
+    PlanarGraph snapped = g;
+    for (Point& p : snapped.vertices) {  // the bug: a "snap tiny values" tolerance
+        if (std::fabs(p.x) < 1e-200) p.x = 0;
+        if (std::fabs(p.y) < 1e-200) p.y = 0;
+    }
+    return faces(snapped, Order::Exact, Turn::Clockwise);
+}
+
+FacesAnswer huge_faces(const PlanarGraph& g) {
+    PlanarGraph clamped = g;
+    for (Point& p : clamped.vertices) {  // the bug: a "world box" of +-1e200 that the points are clamped to
+        p.x = std::clamp(p.x, -1e200, 1e200);
+        p.y = std::clamp(p.y, -1e200, 1e200);
+    }
+    return faces(clamped, Order::Exact, Turn::Clockwise);
 }
 
 DcelDump right_dump(const PlanarGraph& g) { return dump(g, Nesting::Innermost); }

@@ -13,9 +13,11 @@
 //
 // Strong by default: the graphs are targeted from the first case on
 // (near-degenerate coordinates, holes inside holes, isolated vertices, large
-// graphs; GraphCaseOptions::targeted), so RapidCheck's default 100 cases catch
-// a textbook atan2 solver, a counterclockwise next, a hole in the wrong face
-// and a solver that fails on isolated vertices on every seed tried
+// graphs, magnitudes near 2^-700 and 2^700; GraphCaseOptions::targeted), so
+// RapidCheck's default 100 cases catch a textbook atan2 solver, a
+// counterclockwise next, a hole in the wrong face, a solver that fails on
+// isolated vertices and solvers that snap tiny or clamp huge coordinates on
+// every seed tried
 // (properties/test_check_testing_seeds.cpp runs seeds 1 to 20).
 //
 // On failure the message holds the (shrunk) graph as one line of JSON, which

@@ -3,7 +3,8 @@
 // in-process checking helpers (check_testing.hpp), public so that a user's
 // own properties draw the same graphs.
 //
-// A case is (family, seed, vertices) -> gen::generate. The parameters never
+// A case is (family, seed, vertices) -> gen::generate, then in targeted
+// mode perhaps an exact scaling by 2^-700 or 2^700. The parameters never
 // shrink; the graph shrinks by dropping blocks of vertices, then through
 // gen::shrink_candidates, both of which yield only valid graphs, so a
 // counterexample ends as a small valid graph. A case
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <utility>
 #include <vector>
@@ -31,11 +33,14 @@ namespace dcel::testing {
 struct GraphCase {
     gen::Params params;  // where the graph came from (before shrinking)
     PlanarGraph graph;
+    int scale_exponent = 0;  // the generated graph was multiplied by 2^scale_exponent
 };
 
 inline void showValue(const GraphCase& c, std::ostream& os) {
     os << "family " << gen::family_name(c.params.family) << ", seed " << c.params.seed << ", " << c.params.vertices
-       << " vertices asked; " << c.graph.vertices.size() << " vertices, " << c.graph.edges.size()
+       << " vertices asked";
+    if (c.scale_exponent != 0) os << ", scaled by 2^" << c.scale_exponent;
+    os << "; " << c.graph.vertices.size() << " vertices, " << c.graph.edges.size()
        << " edges after shrinking. Paste into `dcel faces -`:\n"
        << io::write_graph(c.graph);
 }
@@ -54,7 +59,11 @@ struct GraphCaseOptions {
     // isolated vertices (6 to 40), 1 large graph (200 to 800 vertices, any
     // family), whatever the size. A uniform draw whose size grows from 0
     // reaches these late or rarely: 100 such cases let a textbook atan2
-    // solver pass on about one seed in four.
+    // solver pass on about one seed in four. Then, whatever was drawn, one
+    // graph in four is scaled by 2^-700 and one in four by 2^700 (exactly;
+    // left as it is when a coordinate would round or overflow), so that tiny
+    // and huge magnitudes come from every family: without it a solver that
+    // clamps coordinates to +-1e200 passed all 100 cases on 20 seeds of 20.
     bool targeted = false;
 };
 
@@ -111,6 +120,21 @@ inline rc::Gen<gen::Params> one_of(std::vector<Weighted> mix) {
     });
 }
 
+// One of the scalings above: none twice as often as either of the others.
+inline rc::Gen<int> scale_exponent(bool targeted) {
+    if (!targeted) return rc::gen::just(0);
+    return unscaled(rc::gen::elementOf(std::vector<int>{0, 0, -700, 700}));
+}
+
+// The generated graph scaled by 2^k, or unscaled when that would round.
+inline GraphCase generated(const gen::Params& p, int k) {
+    PlanarGraph g = gen::generate(p);
+    if (k == 0) return GraphCase{p, std::move(g), 0};
+    std::optional<PlanarGraph> scaled = gen::apply(g, gen::Transform::ScalePow2, k);
+    if (!scaled) return GraphCase{p, std::move(g), 0};
+    return GraphCase{p, std::move(*scaled), k};
+}
+
 inline rc::Gen<gen::Params> case_params(const std::vector<gen::Family>& families, int per_size, bool targeted) {
     return rc::gen::withSize([families, per_size, targeted](int size) {
         const rc::Gen<int> vertices = rc::gen::inRange(0, per_size * size + 4);
@@ -165,12 +189,15 @@ inline rc::Seq<PlanarGraph> smaller_graphs(const PlanarGraph& g) {
 [[nodiscard]] inline rc::Gen<GraphCase> graph_cases(GraphCaseOptions options = {}) {
     const rc::Gen<gen::Params> params = graph_cases_detail::case_params(
         graph_cases_detail::families_or_all(std::move(options.families)), options.vertices_per_size, options.targeted);
-    return rc::gen::mapcat(rc::gen::noShrink(params), [](const gen::Params& p) {
-        return rc::Gen<GraphCase>([p](const rc::Random&, int) {
-            return rc::shrinkable::shrinkRecur(GraphCase{p, gen::generate(p)}, [](const GraphCase& c) {
-                return rc::seq::map(graph_cases_detail::smaller_graphs(c.graph), [params = c.params](PlanarGraph g) {
-                    return GraphCase{params, std::move(g)};
-                });
+    const rc::Gen<std::pair<gen::Params, int>> drawn = rc::gen::pair(params,
+                                                                     graph_cases_detail::scale_exponent(options.targeted));
+    return rc::gen::mapcat(rc::gen::noShrink(drawn), [](const std::pair<gen::Params, int>& d) {
+        return rc::Gen<GraphCase>([d](const rc::Random&, int) {
+            return rc::shrinkable::shrinkRecur(graph_cases_detail::generated(d.first, d.second), [](const GraphCase& c) {
+                return rc::seq::map(graph_cases_detail::smaller_graphs(c.graph),
+                                    [params = c.params, k = c.scale_exponent](PlanarGraph g) {
+                                        return GraphCase{params, std::move(g), k};
+                                    });
             });
         });
     });
