@@ -120,6 +120,25 @@ TEST(JsonReader, FinishArrayCountsAllElements) {
     r.end_document();
 }
 
+TEST(JsonReader, NumberTextIsTheLiteralAsWritten) {
+    JsonReader r(R"([18446744073709551615, -0.0, 5e-324, "x"])");
+    r.begin_array("an array");
+    ASSERT_TRUE(r.next_element());
+    EXPECT_EQ(r.read_number_text(), "18446744073709551615");  // beyond a double's integers
+    ASSERT_TRUE(r.next_element());
+    EXPECT_EQ(r.read_number_text(), "-0.0");
+    ASSERT_TRUE(r.next_element());
+    EXPECT_EQ(r.read_number_text(), "5e-324");
+    ASSERT_TRUE(r.next_element());
+    expect_input_error([&] { static_cast<void>(r.read_number_text("a seed")); }, InputErrorKind::Shape,
+                       "[3]: expected a seed, found a string");
+    JsonReader bad("[1.]");
+    bad.begin_array("an array");
+    ASSERT_TRUE(bad.next_element());
+    expect_input_error([&] { static_cast<void>(bad.read_number_text()); }, InputErrorKind::Syntax,
+                       "a digit must follow the decimal point");
+}
+
 TEST(JsonReader, EscapedKeysAreUnescaped) {
     JsonReader r(R"({"a\"b\\c\/d\b\f\n\r\t\u00e9\u20AC\uD83D\uDE00": 0})");
     r.begin_object("an object");

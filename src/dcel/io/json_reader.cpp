@@ -620,6 +620,13 @@ std::string JsonReader::read_string(std::string_view expected) {
     return value;
 }
 
+std::string_view JsonReader::read_number_text(std::string_view expected) {
+    if (peek() != JsonType::Number) fail_type(expected);
+    const std::size_t begin = pos_;
+    pos_ = scan_number();
+    return text_.substr(begin, pos_ - begin);
+}
+
 void JsonReader::skip_value() {
     const std::size_t base = depth_;
     for (;;) {

@@ -132,6 +132,10 @@ public:
     [[nodiscard]] Index read_index_or_null(std::string_view noun);
     // A string, unescaped (Shape error when the value has another type).
     [[nodiscard]] std::string read_string(std::string_view expected = "a string");
+    // A number's literal, as written (validated, not converted): for readers
+    // that keep numbers exactly as a document has them (a uint64 seed, a
+    // double's shortest form). Valid as long as the text is.
+    [[nodiscard]] std::string_view read_number_text(std::string_view expected = "a number");
 
     // ---- Locations and errors
     // The JSON path of the current value ("edges[3][1]", "half_edges[7].next");
