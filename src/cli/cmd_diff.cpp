@@ -123,13 +123,25 @@ std::string svg_of(const DiffOptions& options, const Failure& f) {
 // The options as typed; empty: the default, which DiffOptions{} holds.
 struct RawOptions {
     std::string cases, seed, time, max_vertices, large_vertices, timeout_ms, shrink_time, only_case, max_failures,
-        print_case;
+        print_case, jobs, shard;
     std::string families, exclude_families, coordinates, exclude_coordinates;
     std::string svg, report, junit;
     bool keep_going = false, stop_at_first = false;
 };
 
 constexpr std::uint64_t kMaxCases = std::uint64_t{1} << 40;
+
+// "K/N" with 1 <= K <= N <= 10000.
+DiffOptions::Shard parse_shard(const std::string& text) {
+    const std::size_t slash = text.find('/');
+    if (slash == std::string::npos) {
+        throw UsageError("--shard: expected K/N (shard K of N, 1 <= K <= N), found \"" + text + "\"");
+    }
+    DiffOptions::Shard shard;
+    shard.count = parse_count("--shard", text.substr(slash + 1), 1, 10000);
+    shard.index = parse_count("--shard", text.substr(0, slash), 1, shard.count);
+    return shard;
+}
 
 void resolve_counts(const RawOptions& raw, DiffOptions& o) {
     if (!raw.cases.empty()) o.cases = parse_count("--cases", raw.cases, 1, kMaxCases);
@@ -145,6 +157,8 @@ void resolve_counts(const RawOptions& raw, DiffOptions& o) {
     if (!raw.shrink_time.empty()) o.shrink_time = parse_seconds("--shrink-time", raw.shrink_time, 0, 1e6);
     if (!raw.only_case.empty()) o.only_case = parse_count("--case", raw.only_case, 0, kMaxCases);
     if (!raw.max_failures.empty()) o.max_failures = parse_count("--max-failures", raw.max_failures, 1, 1000);
+    if (!raw.jobs.empty()) o.jobs = parse_count("--jobs", raw.jobs, 1, diff::kMaxJobs);
+    if (!raw.shard.empty()) o.shard = parse_shard(raw.shard);
 }
 
 void resolve_filters(const RawOptions& raw, DiffOptions& o) {
@@ -181,7 +195,8 @@ DiffOptions resolve(const RawOptions& raw, DiffOptions o) {
     resolve_counts(raw, o);
     resolve_filters(raw, o);
     if (!o.time && !o.cases) o.cases = diff::defaults::kCases;  // --time alone: as many as fit
-    o.keep_going = (raw.keep_going || o.time.has_value()) && !raw.stop_at_first;
+    // A shard keeps going: merged, its failures make the whole run's.
+    o.keep_going = (raw.keep_going || o.time.has_value() || o.shard.has_value()) && !raw.stop_at_first;
     if (o.only_case) o.keep_going = false;
     o.schedule.one_line = true;  // one graph per line, in both modes
     return o;
@@ -220,6 +235,14 @@ void add_schedule_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) 
 void add_run_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) {
     const DiffOptions d;
     cmd.add_flag("--stream", options.stream, "Start \"CMD --stream\" once; one graph per line in, one answer per line out");
+    cmd.add_option("--jobs", raw.jobs,
+                   "Run N processes of the command at once (at most " + std::to_string(diff::kMaxJobs) +
+                       "); the report is the same for every N" + default_is(d.jobs))
+        ->type_name("N");
+    cmd.add_option("--shard", raw.shard,
+                   "Run shard K of N: the cases i with i mod N = K - 1 (implies --keep-going); "
+                   "dcel diff-merge joins the shards' reports")
+        ->type_name("K/N");
     cmd.add_option("--timeout-ms", raw.timeout_ms,
                    "Time allowed per case, in milliseconds" + default_is(d.limits.timeout.count()))
         ->type_name("M");

@@ -128,6 +128,7 @@ void add_options_and_commands(CLI::App& app, Action& action, std::uint64_t& max_
     add_gen_command(app, action);
     add_render_command(app, action);
     add_diff_command(app, action);
+    add_diff_merge_command(app, action);
 }
 
 // CLI11 answers "A subcommand is required" to a misspelt command; this

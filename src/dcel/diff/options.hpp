@@ -42,6 +42,18 @@ struct DiffOptions {
     AnswerOptions answer;
     bool keep_going = false;  // go on after a failure (the default under --time)
     std::size_t max_failures = defaults::kMaxFailures;
+    // Processes of the command run at once (1 .. kMaxJobs). The search runs
+    // cases on that many workers; the results are judged in case order, and
+    // confirming and shrinking a failure run alone, so the report does not
+    // depend on it (session.cpp, "With --jobs").
+    std::size_t jobs = 1;
+    // --shard K/N: only the cases i with i mod N = K - 1, so that N runs (the
+    // jobs of a CI matrix) share one campaign; dcel diff-merge joins their
+    // reports into the report one run would have written.
+    struct Shard {
+        std::size_t index = 1, count = 1;  // K (1 .. N) and N
+    };
+    std::optional<Shard> shard;
 };
 
 }  // namespace dcel::diff

@@ -9,11 +9,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <mutex>
 #include <string_view>
 #include <thread>
 
@@ -32,30 +34,38 @@ void close_fd(int& fd) {
     fd = -1;
 }
 
-// The process groups alive now (a one-shot run and a stream at most), so
-// that Ctrl-C or a kill of dcel does not leave a hanging command behind: the
-// children have their own group, which the terminal's SIGINT does not reach.
-// Mutable and global because the signal handler reads it.
+// The process groups alive now (with --jobs N, up to N workers' commands
+// and a shrinker's), so that Ctrl-C or a kill of dcel does not leave a
+// hanging command behind: the children have their own group, which the
+// terminal's SIGINT does not reach. Mutable and global because the signal
+// handler reads it; lock-free atomics, because threads write it.
+constexpr std::size_t kMaxLiveGroups = 2 * kMaxJobs + 8;
+static_assert(std::atomic<pid_t>::is_always_lock_free, "the signal handler reads live_groups");
 // NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables)
-volatile std::sig_atomic_t live_groups[4] = {0, 0, 0, 0};
+std::atomic<pid_t> live_groups[kMaxLiveGroups];
+
+// Spawning a child and recording it, and looking for strays, exclude each
+// other: between posix_spawn and remember_group, another thread's
+// reap_strays would take the new child for a stray and kill it.
+// NOLINTNEXTLINE(cppcoreguidelines-avoid-non-const-global-variables)
+std::mutex children_mutex;
 
 void remember_group(pid_t pid) {
-    for (volatile std::sig_atomic_t& slot : live_groups) {
-        if (slot == 0) {
-            slot = pid;
-            return;
-        }
+    for (std::atomic<pid_t>& slot : live_groups) {
+        pid_t empty = 0;
+        if (slot.compare_exchange_strong(empty, pid)) return;
     }
 }
 void forget_group(pid_t pid) {
-    for (volatile std::sig_atomic_t& slot : live_groups) {
-        if (slot == pid) slot = 0;
+    for (std::atomic<pid_t>& slot : live_groups) {
+        pid_t here = pid;
+        (void)slot.compare_exchange_strong(here, 0);
     }
 }
 
 bool is_live_group(pid_t pid) {
-    for (const volatile std::sig_atomic_t& slot : live_groups) {
-        if (slot == pid) return true;
+    for (const std::atomic<pid_t>& slot : live_groups) {
+        if (slot.load() == pid) return true;
     }
     return false;
 }
@@ -165,9 +175,10 @@ void reap_strays(bool all_threads) {
 
 extern "C" void kill_groups_and_die(int sig) {
     const int saved = errno;
-    for (volatile std::sig_atomic_t& slot : live_groups) {
-        if (slot != 0) ::kill(-static_cast<pid_t>(slot), SIGKILL);
-        slot = 0;  // now strays like any other: reaped below, so that their escaped children come to us
+    for (std::atomic<pid_t>& slot : live_groups) {
+        const pid_t pid = slot.exchange(
+            0);  // now a stray like any other: reaped below, so that its escaped children come to us
+        if (pid != 0) ::kill(-pid, SIGKILL);
     }
     reap_strays(false);
     errno = saved;
@@ -202,13 +213,13 @@ int above_stdio(int fd) {
     ::close(fd);
     return high;
 }
+// pipe2 sets close-on-exec atomically: with --jobs, another thread's
+// posix_spawn between pipe() and fcntl() would hand this pipe's write end to
+// its child, and our reader would never see end of file while that lives.
 Pipe make_pipe() {
     int fds[2];
-    if (::pipe(fds) != 0) throw ProcessError(std::string("cannot create a pipe: ") + std::strerror(errno));
-    for (int& fd : fds) {
-        ::fcntl(fd, F_SETFD, FD_CLOEXEC);
-        fd = above_stdio(fd);
-    }
+    if (::pipe2(fds, O_CLOEXEC) != 0) throw ProcessError(std::string("cannot create a pipe: ") + std::strerror(errno));
+    for (int& fd : fds) fd = above_stdio(fd);
     return {fds[0], fds[1]};
 }
 void set_nonblocking(int fd) { ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK); }
@@ -242,7 +253,10 @@ Child spawn(const std::string& command) {
     std::string sh = "/bin/sh", dash_c = "-c", cmd = command;
     char* argv[] = {sh.data(), dash_c.data(), cmd.data(), nullptr};
     pid_t pid = -1;
+    std::unique_lock<std::mutex> lock(children_mutex);
     const int rc = ::posix_spawn(&pid, "/bin/sh", &actions, &attr, argv, environ);
+    if (rc == 0) remember_group(pid);
+    lock.unlock();
     posix_spawn_file_actions_destroy(&actions);
     posix_spawnattr_destroy(&attr);
     ::close(in.read);
@@ -255,7 +269,6 @@ Child spawn(const std::string& command) {
         throw ProcessError(std::string("cannot start /bin/sh: ") + std::strerror(rc));
     }
     for (int fd : {in.write, out.read, err.read}) set_nonblocking(fd);
-    remember_group(pid);
     return {pid, in.write, out.read, err.read};
 }
 
@@ -285,7 +298,10 @@ void finish(Child& c, ProcessResult& r, bool decided) {
     while (::waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
     }
     forget_group(c.pid);
-    reap_strays(true);  // what escaped the group and came back to us
+    {
+        const std::lock_guard<std::mutex> lock(children_mutex);
+        reap_strays(true);  // what escaped the group and came back to us
+    }
     if (!decided) {
         if (WIFSIGNALED(status)) {
             r.end = ProcessEnd::Signalled;

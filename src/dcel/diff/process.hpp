@@ -19,6 +19,10 @@
 
 namespace dcel::diff {
 
+// The most processes of the command run at once by one `dcel diff --jobs N`
+// (N workers; the process layer records each one's group).
+inline constexpr std::size_t kMaxJobs = 64;
+
 // The command could not be run at all: no pipe, no /bin/sh, poll failing,
 // or /bin/sh saying the command is not found or not executable.
 class ProcessError : public std::runtime_error {

@@ -209,6 +209,10 @@ std::string run_command_line(const DiffOptions& options) {
     if (options.cases) command += " --cases " + std::to_string(*options.cases);
     if (options.time) command += " --time " + seconds(*options.time).substr(0, seconds(*options.time).size() - 2);
     if (options.keep_going) command += " --keep-going";
+    if (options.shard) {
+        command += " --shard " + std::to_string(options.shard->index) + "/" + std::to_string(options.shard->count);
+    }
+    if (options.jobs > 1) command += " --jobs " + std::to_string(options.jobs);
     return command;
 }
 

@@ -48,6 +48,10 @@ void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f)
 // command-line words (shared by the replay and --print-case lines).
 [[nodiscard]] std::string schedule_arguments(const DiffOptions& options);
 
+// Text as XML character data and attribute values, well-formed whatever the
+// bytes (report_junit.cpp).
+[[nodiscard]] std::string xml_text(std::string_view text);
+
 // A word for the shell: 'text' with every ' written as '\''.
 [[nodiscard]] std::string shell_quote(const std::string& text);
 

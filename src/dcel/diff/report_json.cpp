@@ -54,6 +54,12 @@ void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& resu
     w.string(options.impl);
     w.key("seed");
     w.count(options.schedule.seed);
+    w.key("shard");
+    if (options.shard) {
+        w.string(std::to_string(options.shard->index) + "/" + std::to_string(options.shard->count));
+    } else {
+        w.null();
+    }
     w.key("answer_kind");
     if (options.answer.kind) {
         w.string(check::answer_kind_name(*options.answer.kind));
@@ -200,6 +206,27 @@ void write_failure(JsonWriter& w, const DiffOptions& options, const Failure& f) 
     for (const std::size_t n : f.cases) {
         w.item();
         w.count(n);
+    }
+    w.end_array();
+    w.key("keys");
+    w.begin_array(Layout::Lines);
+    for (const KeySeen& k : f.keys) {
+        w.item();
+        w.begin_object();
+        w.key("key");
+        w.string(k.key);
+        w.key("coordinates");
+        w.string(gen::coordinate_class_name(k.coordinates));
+        w.key("occurrences");
+        w.count(k.occurrences);
+        w.key("cases");
+        w.begin_array();
+        for (const std::size_t n : k.cases) {
+            w.item();
+            w.count(n);
+        }
+        w.end_array();
+        w.end_object();
     }
     w.end_array();
     w.key("found_after_ms");

@@ -7,14 +7,13 @@
 #include "dcel/diff/report.hpp"
 
 namespace dcel::diff {
-namespace {
 
 // Text as XML 1.0 character data and attribute values: the five special
 // characters as entities; control characters XML does not allow (all but
 // tab, newline and return) as '?'; bytes that are not well-formed UTF-8 as
 // U+FFFD, so the document is always well-formed whatever the implementation
 // printed.
-std::string xml(std::string_view text) {
+std::string xml_text(std::string_view text) {
     std::string out;
     out.reserve(text.size());
     for (std::size_t i = 0; i < text.size();) {
@@ -42,26 +41,25 @@ std::string xml(std::string_view text) {
     return out;
 }
 
-}  // namespace
-
 std::string report_junit(const DiffOptions& options, const DiffResult& result) {
     std::ostringstream s;
     const std::size_t tests = result.failures.size() + 1;
     s << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
     s << "<testsuites name=\"dcel diff\" tests=\"" << tests << "\" failures=\"" << result.failures.size() << "\">\n";
-    s << "  <testsuite name=\"" << xml("dcel diff --impl " + options.impl) << "\" tests=\"" << tests << "\" failures=\""
+    s << "  <testsuite name=\"" << xml_text("dcel diff --impl " + options.impl) << "\" tests=\"" << tests << "\" failures=\""
       << result.failures.size() << "\" time=\"" << static_cast<double>(result.elapsed.count()) / 1000.0 << "\">\n";
     s << "    <testcase classname=\"dcel.diff\" name=\"" << (result.cases_run - result.skipped) << " cases, seed "
       << options.schedule.seed << "\"/>\n";
     for (const Failure& f : result.failures) {
         std::ostringstream body;
         failure_body(body, options, f);
-        s << "    <testcase classname=\"dcel.diff\" name=\"" << xml("failure " + std::to_string(f.id) + ": " + f.signature)
-          << "\">\n";
+        s << "    <testcase classname=\"dcel.diff\" name=\""
+          << xml_text("failure " + std::to_string(f.id) + ": " + f.signature) << "\">\n";
         s << "      <failure message=\""
-          << xml(failure_label(f.example.first) + " on case " + std::to_string(f.example.original.spec.number) +
-                 ", shrunk to " + size_of(f.example.graph))
-          << "\" type=\"" << xml(failure_name(f.example.first.kind).data()) << "\">" << xml(body.str()) << "</failure>\n";
+          << xml_text(failure_label(f.example.first) + " on case " + std::to_string(f.example.original.spec.number) +
+                      ", shrunk to " + size_of(f.example.graph))
+          << "\" type=\"" << xml_text(failure_name(f.example.first.kind).data()) << "\">" << xml_text(body.str())
+          << "</failure>\n";
         s << "    </testcase>\n";
     }
     s << "  </testsuite>\n</testsuites>\n";

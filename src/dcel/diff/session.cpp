@@ -1,8 +1,12 @@
 #include "dcel/diff/session.hpp"
 
 #include <algorithm>
+#include <condition_variable>
 #include <deque>
+#include <map>
 #include <memory>
+#include <mutex>
+#include <thread>
 #include <unordered_set>
 
 #include "dcel/build.hpp"
@@ -40,14 +44,17 @@ public:
         const std::size_t end = o_.only_case ? first + 1 : o_.cases.value_or(SIZE_MAX);
         result_.first_case = first;
         result_.stopped_by = StopReason::Cases;
-        for (std::size_t i = first; i < end; ++i) {
-            if (o_.time && !o_.only_case && since(start_) >= *o_.time) {
-                result_.stopped_by = StopReason::Time;
-                break;
+        std::size_t starts = 0;
+        if (o_.jobs > 1 && !o_.only_case) {
+            starts = run_on_workers(first, end);
+        } else {
+            for (std::size_t i = in_shard(first); i < end; i = in_shard(i + 1)) {
+                if (time_is_up()) break;
+                if (!run_case(i, first)) break;
             }
-            if (!run_case(i, first)) break;
         }
-        result_.restarts = impl_->starts() > 0 ? impl_->starts() - 1 : 0;
+        starts += impl_->starts();
+        result_.restarts = starts > 0 ? starts - 1 : 0;
         result_.elapsed = since(start_);
         result_.reference_cpu = clock_.cpu() - cpu_start_;
         result_.agreed_as = judging_.agreed_as;
@@ -59,27 +66,160 @@ private:
         return std::chrono::duration_cast<milliseconds>(clock_.now() - t);
     }
 
+    // The first case from i on that belongs to this run's shard (--shard K/N:
+    // the cases i with i mod N = K - 1); i itself without --shard or --case.
+    [[nodiscard]] std::size_t in_shard(std::size_t i) const {
+        if (!o_.shard || o_.only_case) return i;
+        const std::size_t n = o_.shard->count, k = o_.shard->index - 1;
+        const std::size_t r = i % n;
+        return r <= k ? i - r + k : i - r + n + k;
+    }
+
+    bool time_is_up() {
+        if (!o_.time || o_.only_case || since(start_) < *o_.time) return false;
+        result_.stopped_by = StopReason::Time;
+        return true;
+    }
+
+    // A case as run: its graph (none when the schedule found none), the
+    // limit it ran under, what the command did and how long it took.
+    struct Ran {
+        std::optional<Case> c;
+        milliseconds limit{};
+        ProcessResult run;
+        milliseconds took{};
+        std::size_t worker = 0;
+    };
+
+    [[nodiscard]] milliseconds limit_for(const Case& c) {
+        const std::lock_guard<std::mutex> lock(speed_mutex_);
+        return speed_.limit(c.graph.vertices.size() + c.graph.edges.size(), o_.limits.timeout);
+    }
+
+    // Runs case i on `impl`; does not judge it.
+    Ran run_only(std::size_t i, Implementation& impl, std::size_t worker) {
+        Ran r;
+        r.worker = worker;
+        r.c = make_case(o_.schedule, i);
+        if (!r.c) return r;
+        r.limit = limit_for(*r.c);
+        const Clock::time_point t = clock_.now();
+        r.run = impl.run(r.c->text, r.limit);
+        r.took = since(t);
+        return r;
+    }
+
     // Runs case i; false when the run stops here.
-    bool run_case(std::size_t i, std::size_t first) {
-        std::optional<Case> c = make_case(o_.schedule, i);
+    bool run_case(std::size_t i, std::size_t first) { return settle(run_only(i, *impl_, 0), i, first); }
+
+    // ---- With --jobs: the search on workers, the judging in order.
+    //
+    // Each worker has its own implementation (its own --stream process) and
+    // runs the cases it takes, a bounded window ahead of the judging. The
+    // cases are judged here one by one in case order, as without --jobs:
+    // the grouping, the counting and which case is shrunk depend only on the
+    // order, and a new failure is confirmed and shrunk alone (the workers
+    // start no case meanwhile). What can differ from --jobs 1 is only what
+    // depends on time (a case's limit follows the speed of the cases done
+    // so far) or on a --stream process's state (the graphs a worker's
+    // process saw before a failure are that worker's, and a reproduction
+    // after them uses those).
+    std::size_t run_on_workers(std::size_t first, std::size_t end) {
+        // How far ahead of the judging the workers may run, in case numbers
+        // (a shard's cases are N apart).
+        const std::size_t window = 4 * o_.jobs * (o_.shard ? o_.shard->count : 1);
+        std::mutex m;
+        std::condition_variable changed;
+        std::map<std::size_t, Ran> done;
+        std::size_t next = in_shard(first), judged = first;
+        bool stop = false, paused = false;
+        std::vector<char> restart(o_.jobs, 0);
+        std::vector<std::unique_ptr<Implementation>> impls;
+        for (std::size_t w = 0; w < o_.jobs; ++w) impls.push_back(make_(o_.limits));
+        histories_.resize(o_.jobs);
+        std::vector<std::thread> workers;
+        for (std::size_t w = 0; w < o_.jobs; ++w) {
+            workers.emplace_back([&, w] {
+                std::unique_lock<std::mutex> lock(m);
+                for (;;) {
+                    changed.wait(lock, [&] { return stop || (!paused && next < end && next < judged + window); });
+                    if (stop) return;
+                    const std::size_t i = next;
+                    next = in_shard(next + 1);
+                    const bool fresh = restart[w] != 0;
+                    restart[w] = 0;
+                    lock.unlock();
+                    if (fresh) impls[w]->restart();
+                    Ran r = run_only(i, *impls[w], w);
+                    lock.lock();
+                    done.emplace(i, std::move(r));
+                    changed.notify_all();
+                }
+            });
+        }
+        // The workers stop and are joined however this ends (settle throws
+        // when the command cannot be run at all).
+        const auto stop_workers = [&] {
+            {
+                const std::lock_guard<std::mutex> lock(m);
+                stop = true;
+            }
+            changed.notify_all();
+            for (std::thread& t : workers) t.join();
+        };
+        try {
+            for (std::size_t i = in_shard(first); i < end && !time_is_up(); i = in_shard(i + 1)) {
+                std::unique_lock<std::mutex> lock(m);
+                changed.wait(lock, [&] { return done.contains(i); });
+                Ran r = std::move(done.at(i));
+                done.erase(i);
+                judged = i + 1;
+                paused = true;  // while settling: a new failure is confirmed and shrunk alone
+                changed.notify_all();
+                lock.unlock();
+                const std::size_t worker = r.worker, failures = result_.failures.size();
+                const bool go_on = settle(std::move(r), i, first);
+                lock.lock();
+                if (result_.failures.size() != failures) restart[worker] = 1;  // the search goes on in a fresh process
+                paused = false;
+                changed.notify_all();
+                if (!go_on) break;
+            }
+        } catch (...) {
+            stop_workers();
+            throw;
+        }
+        stop_workers();
+        std::size_t starts = 0;
+        for (const auto& impl : impls) starts += impl->starts();
+        return starts;
+    }
+
+    // Judges a case as run and takes what follows from it; false when the
+    // run stops here.
+    bool settle(Ran r, std::size_t i, std::size_t first) {
         ++result_.cases_run;
-        if (!c) {
+        if (!r.c) {
             ++result_.skipped;
             return true;
         }
+        std::optional<Case>& c = r.c;
         result_.large_cases += c->spec.large ? 1 : 0;
         report_progress(i, *c);
         const std::size_t size = c->graph.vertices.size() + c->graph.edges.size();
-        const milliseconds limit = speed_.limit(size, o_.limits.timeout);
-        const Clock::time_point t = clock_.now();
-        Outcome outcome = judge(build(c->graph), impl_->run(c->text, limit), limit_as(limit), judging_);
-        const milliseconds took = since(t);
+        const milliseconds limit = r.limit;
+        Outcome outcome = judge(build(c->graph), r.run, limit_as(limit), judging_);
+        const milliseconds took = r.took;
+        worker_ = r.worker;
         if (outcome.skipped) {
             count_skip(outcome.skip_reason);
             return true;
         }
         if (outcome.agrees) {
-            speed_.record(size, took);
+            {
+                const std::lock_guard<std::mutex> lock(speed_mutex_);
+                speed_.record(size, took);
+            }
             slowest_pass_ = std::max(slowest_pass_, took);
             if (took > o_.limits.timeout) note_slow(*c, took, limit);
             remember(std::move(*c));
@@ -141,10 +281,12 @@ private:
         progress_(line);
     }
 
+    // The passing graphs of the worker that ran the current case.
     void remember(Case c) {
         if (!o_.stream) return;
-        history_.push_back(std::move(c));
-        if (history_.size() > kHistory) history_.pop_front();
+        std::deque<Case>& history = histories_[worker_];
+        history.push_back(std::move(c));
+        if (history.size() > kHistory) history.pop_front();
     }
 
     // A failure: counted against the failure whose key it has (its class,
@@ -157,26 +299,27 @@ private:
         const std::string key = failure_class(outcome) + "|" + difference_kinds(outcome) + "|" +
                                 std::string(gen::coordinate_class_name(coordinates));
         for (Failure& f : result_.failures) {
-            if (std::find(f.keys.begin(), f.keys.end(), key) != f.keys.end()) {
-                count(f, c.spec.number);
+            for (KeySeen& k : f.keys) {
+                if (k.key != key) continue;
+                count(f, k, c.spec.number);
                 return;
             }
         }
         Failure f;
-        f.keys.push_back(key);
+        f.keys.push_back({key, coordinates, 0, {}});
         f.classes.push_back(coordinates);
         f.found_after = since(start_);
-        count(f, c.spec.number);
+        count(f, f.keys.back(), c.spec.number);
         f.example = investigate(std::move(c), std::move(outcome), limit);
         impl_->restart();  // the search goes on in a fresh process
         f.signature = signature(f.example);
         for (Failure& other : result_.failures) {
             if (other.signature != f.signature) continue;
-            other.keys.push_back(key);
+            other.keys.push_back({key, coordinates, 0, {}});
             if (std::find(other.classes.begin(), other.classes.end(), coordinates) == other.classes.end()) {
                 other.classes.push_back(coordinates);
             }
-            count(other, f.cases.front());
+            count(other, other.keys.back(), f.cases.front());
             return;
         }
         f.id = result_.failures.size() + 1;
@@ -193,9 +336,11 @@ private:
                              : "case " + std::to_string(x.original.spec.number));
     }
 
-    static void count(Failure& f, std::size_t case_number) {
+    static void count(Failure& f, KeySeen& k, std::size_t case_number) {
         ++f.occurrences;
         if (f.cases.size() < kMaxListedCases) f.cases.push_back(case_number);
+        ++k.occurrences;
+        if (k.cases.size() < kMaxListedCases) k.cases.push_back(case_number);
     }
 
     Counterexample investigate(Case c, Outcome first, milliseconds limit) {
@@ -218,13 +363,14 @@ private:
         impl_->restart();
         x.reproduced = fails_same(*impl_, {}, x.original.text, x.first, x.limit).has_value();
         if (x.reproduced || !o_.stream) return;
-        for (std::size_t k = 1; k <= history_.size() && !x.reproduced; k *= 2) {
+        const std::deque<Case>& history = histories_[worker_];
+        for (std::size_t k = 1; k <= history.size() && !x.reproduced; k *= 2) {
             std::vector<std::string> prefix;
-            for (std::size_t j = history_.size() - k; j < history_.size(); ++j) prefix.push_back(history_[j].text);
+            for (std::size_t j = history.size() - k; j < history.size(); ++j) prefix.push_back(history[j].text);
             if (fails_same(*impl_, prefix, x.original.text, x.first, x.limit)) {
                 x.reproduced = true;
                 x.prefix = std::move(prefix);
-                prefix_cases_.assign(history_.end() - static_cast<std::ptrdiff_t>(k), history_.end());
+                prefix_cases_.assign(history.end() - static_cast<std::ptrdiff_t>(k), history.end());
             }
         }
     }
@@ -419,8 +565,11 @@ private:
     AnswerJudging judging_;
     DiffResult result_;
     milliseconds slowest_pass_{0};
-    SpeedModel speed_;                // the implementation's speed on passing cases, for each case's time limit
-    std::deque<Case> history_;        // --stream: the last graphs that passed, in order
+    SpeedModel speed_;        // the implementation's speed on passing cases, for each case's time limit
+    std::mutex speed_mutex_;  // the workers read speed_ (--jobs)
+    // --stream: the last graphs that passed, in order, for each worker (one without --jobs)
+    std::vector<std::deque<Case>> histories_ = std::vector<std::deque<Case>>(1);
+    std::size_t worker_ = 0;          // the worker that ran the case being settled
     std::vector<Case> prefix_cases_;  // the cases behind a failure's prefix
 };
 

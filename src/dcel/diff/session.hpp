@@ -54,9 +54,19 @@ struct Counterexample {
 // difference and the size it shrank to) joins it to a failure with the same
 // signature, or makes a new one. So one bug seen in two coordinate classes
 // is one failure that lists both.
+// The cases of one key (a failure's class, kinds of difference and
+// coordinate class) counted as a failure: what `dcel diff-merge` needs to
+// group the failures of several shards exactly as one run would.
+struct KeySeen {
+    std::string key;
+    gen::CoordinateClass coordinates = gen::CoordinateClass::SmallIntegers;
+    std::size_t occurrences = 0;
+    std::vector<std::size_t> cases;  // the first kMaxListedCases, in order
+};
+
 struct Failure {
     std::size_t id = 0;                         // 1, 2, ... in the order found
-    std::vector<std::string> keys;              // the case keys counted as this failure
+    std::vector<KeySeen> keys;                  // the case keys counted as this failure, in the order first seen
     std::vector<gen::CoordinateClass> classes;  // the coordinate classes it failed in, as seen
     std::string signature;                      // of the counterexample, after shrinking
     std::vector<std::size_t> cases;             // the cases that failed this way (the first kMaxListedCases)
