@@ -16,6 +16,7 @@
 #include "dcel/build.hpp"
 #include "dcel/check/counterexample_svg.hpp"
 #include "dcel/diff/report.hpp"
+#include "dcel/diff/report_html.hpp"
 #include "dcel/diff/session.hpp"
 #include "dcel/format.hpp"
 #include "option_values.hpp"
@@ -125,7 +126,7 @@ struct RawOptions {
     std::string cases, seed, time, max_vertices, large_vertices, timeout_ms, shrink_time, only_case, max_failures,
         print_case, jobs, shard;
     std::string families, exclude_families, coordinates, exclude_coordinates;
-    std::string svg, report, junit;
+    std::string svg, report, junit, html;
     bool keep_going = false, stop_at_first = false;
 };
 
@@ -263,6 +264,8 @@ void add_output_options(CLI::App& cmd, RawOptions& raw) {
     cmd.add_option("--report", raw.report, "Write the report as JSON to FILE (docs/diff-report.schema.json)")
         ->type_name("FILE");
     cmd.add_option("--junit", raw.junit, "Write JUnit XML to FILE: one test case per distinct failure")->type_name("FILE");
+    cmd.add_option("--html", raw.html, "Write the report as one self-contained HTML page to FILE, with each picture")
+        ->type_name("FILE");
     cmd.add_option("--svg", raw.svg, "Draw each counterexample into FILE (failure k > 1: FILE-k.svg)")->type_name("FILE");
 }
 
@@ -288,6 +291,7 @@ void write_outputs(const RawOptions& raw, const DiffOptions& o, const DiffResult
     write_stdout(diff::format_report(o, result));
     if (!raw.report.empty()) write_file(raw.report, diff::report_json(o, result));
     if (!raw.junit.empty()) write_file(raw.junit, diff::report_junit(o, result));
+    if (!raw.html.empty()) write_file(raw.html, diff::render_html_report(diff::report_json(o, result)));
     if (!raw.svg.empty()) {
         for (const Failure& f : result.failures) {
             const std::string path = numbered(raw.svg, f.id);

@@ -6,6 +6,7 @@
 // fails must not read as "failures found".
 #include "commands.hpp"
 #include "dcel/diff/merge.hpp"
+#include "dcel/diff/report_html.hpp"
 #include "dcel/error.hpp"
 
 namespace dcel::cli {
@@ -13,7 +14,7 @@ namespace {
 
 struct MergeOptions {
     std::vector<std::string> reports;
-    std::string report, junit;
+    std::string report, junit, html;
 };
 
 int run_merge(const MergeOptions& o) {
@@ -37,6 +38,7 @@ int run_merge(const MergeOptions& o) {
     write_stdout(diff::merged_summary(merged));
     if (!o.report.empty()) write_file(o.report, diff::write_json(merged));
     if (!o.junit.empty()) write_file(o.junit, diff::merged_junit(merged));
+    if (!o.html.empty()) write_file(o.html, diff::render_html_report(merged));
     const diff::JsonValue* agrees = merged.find("agrees");
     return agrees != nullptr && agrees->bool_or(false) ? kExitOk : kExitInvalid;
 }
@@ -52,6 +54,8 @@ void add_diff_merge_command(CLI::App& app, Action& action) {
         ->required();
     cmd->add_option("--report", o->report, "Write the merged report as JSON to FILE")->type_name("FILE");
     cmd->add_option("--junit", o->junit, "Write JUnit XML to FILE: one test case per distinct failure")->type_name("FILE");
+    cmd->add_option("--html", o->html, "Write the merged report as one self-contained HTML page to FILE")
+        ->type_name("FILE");
     cmd->callback([&action, o] { action = [o] { return run_merge(*o); }; });
 }
 

@@ -318,6 +318,7 @@ JsonValue merged_run(const std::vector<ShardReport>& shards, JsonValue failures)
     set(out, "shards", number(shards.size()));
     const JsonValue* kind = s0.report.find("answer_kind");
     set(out, "answer_kind", kind != nullptr ? *kind : null());
+    set(out, "conventions", member(s0, s0.report, "conventions", JsonType::Object));
     set(out, "cases_run", number(sum(shards, "cases_run")));
     std::uint64_t first = UINT64_MAX;
     for (const ShardReport& s : shards) first = std::min(first, count_of(s, s.report, "first_case"));

@@ -44,6 +44,23 @@ void write_slow(JsonWriter& w, const DiffResult& result) {
     w.end_object();
 }
 
+// How answers were read: the HTML page reads the answer in the report again
+// to draw it, and needs the conventions the run read it under.
+void write_conventions(JsonWriter& w, const check::Conventions& c) {
+    w.begin_object();
+    w.key("face_on_right");
+    w.boolean(c.face_on_right);
+    w.key("one_based");
+    w.boolean(c.one_based);
+    w.key("unoriented");
+    w.boolean(c.unoriented);
+    w.key("isolated_cycles");
+    w.boolean(c.isolated_cycles);
+    w.key("holes_unattached");
+    w.boolean(c.holes_unattached);
+    w.end_object();
+}
+
 void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& result) {
     static constexpr const char* kStops[] = {"cases", "time", "first-failure", "max-failures"};
     w.key("format");
@@ -66,6 +83,8 @@ void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& resu
     } else {
         w.null();
     }
+    w.key("conventions");
+    write_conventions(w, options.answer.conventions);
     w.key("cases_run");
     w.count(result.cases_run);
     w.key("first_case");
@@ -168,6 +187,13 @@ void write_outcome(JsonWriter& w, const Outcome& o) {
         w.string(check::kind_name(d.kind));
         w.key("message");
         w.string(d.message);
+        w.key("vertices");
+        w.begin_array();
+        for (const Index v : d.vertices) {
+            w.item();
+            w.index(v);
+        }
+        w.end_array();
         w.end_object();
     }
     w.end_array();
