@@ -1,5 +1,7 @@
 // compare_polygons and compare_rings: region answers against the bounded
-// faces of the reference, as oriented boundary chains (answer.hpp).
+// faces of the reference, as oriented boundary chains (answer.hpp); and the
+// reference's own region answers, listed (reference_regions) or written a
+// face at a time (write_reference_answer).
 //
 // A chain is a sorted list of half-edge ids: a ring contributes the
 // half-edges it walks (after orienting it), and a half-edge cancels against
@@ -27,6 +29,8 @@
 #include "dcel/contracts.hpp"
 #include "dcel/format.hpp"
 #include "dcel/geometry/area.hpp"
+#include "dcel/io/dcel_json.hpp"
+#include "dcel/io/json_writer.hpp"
 
 namespace dcel::check {
 
@@ -549,14 +553,61 @@ std::vector<char> odd_faces(const Dcel& reference) {
     return odd;
 }
 
-std::vector<std::vector<std::vector<Index>>> reference_regions(const Dcel& reference, AnswerKind kind) {
-    std::vector<std::vector<std::vector<Index>>> out;
+namespace {
+
+// Calls f with each region reference_regions lists, in its order: a bounded
+// face's shell and holes (rings: its one ring), as vertex-id loops, one
+// face at a time. f may move the region away.
+template <class F>
+void for_each_reference_region(const Dcel& reference, AnswerKind kind, F&& f) {
     const std::vector<Chain> polygons = kind == AnswerKind::Rings ? std::vector<Chain>{} : polygon_chains(reference);
     const std::vector<char> odd = kind == AnswerKind::EvenOdd ? odd_faces(reference) : std::vector<char>{};
-    for (Index f = 1; f < reference.num_faces(); ++f) {
-        if (kind == AnswerKind::EvenOdd && odd[f] == 0) continue;
-        out.push_back(loops(reference, kind == AnswerKind::Rings ? ring_chain(reference, FaceId(f)) : polygons[f]));
+    for (Index face = 1; face < reference.num_faces(); ++face) {
+        if (kind == AnswerKind::EvenOdd && odd[face] == 0) continue;
+        std::vector<std::vector<Index>> region = loops(
+            reference, kind == AnswerKind::Rings ? ring_chain(reference, FaceId(face)) : polygons[face]);
+        f(region);
     }
+}
+
+}  // namespace
+
+void write_reference_answer(const Dcel& reference, AnswerKind kind, const io::TextSink& sink) {
+    switch (kind) {
+        case AnswerKind::Faces: io::write_faces_of(reference, sink); return;
+        case AnswerKind::Dump: io::write_dump_of(reference, io::DumpStyle::Compact, sink); return;
+        case AnswerKind::Polygons:
+        case AnswerKind::Rings:
+        case AnswerKind::EvenOdd: break;
+    }
+    const bool rings = kind == AnswerKind::Rings;
+    io::JsonWriter w(sink);
+    w.raw(rings ? "{\"rings\": [" : "{\"polygons\": [");
+    bool first = true;
+    for_each_reference_region(reference, kind, [&](std::vector<std::vector<Index>>& region) {
+        if (!first) w.raw(", ");
+        first = false;
+        if (!rings) w.raw("[");
+        for (std::size_t r = 0; r < region.size(); ++r) {
+            if (rings && r != 0) break;  // one ring per face
+            if (r != 0) w.raw(", ");
+            w.raw("[");
+            for (std::size_t i = 0; i < region[r].size(); ++i) {
+                if (i != 0) w.raw(", ");
+                w.index(region[r][i]);
+            }
+            w.raw("]");
+        }
+        if (!rings) w.raw("]");
+    });
+    w.raw("]}\n");
+    w.flush();
+}
+
+std::vector<std::vector<std::vector<Index>>> reference_regions(const Dcel& reference, AnswerKind kind) {
+    std::vector<std::vector<std::vector<Index>>> out;
+    for_each_reference_region(reference, kind,
+                              [&](std::vector<std::vector<Index>>& region) { out.push_back(std::move(region)); });
     return out;
 }
 
