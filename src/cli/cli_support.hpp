@@ -16,6 +16,7 @@
 
 #include "dcel/dcel.hpp"
 #include "dcel/graph.hpp"
+#include "dcel/io/text_sink.hpp"
 
 namespace dcel::cli {
 
@@ -36,13 +37,15 @@ public:
 // for a one-line message (dcel/format.hpp).
 [[nodiscard]] std::string display_name(const std::string& path);
 
-// ---- Reading and writing (input_output.cpp). Every failure is a UsageError
-// (exit 2) with the OS's reason: "cannot read graph.json: Is a directory".
+// ---- Reading (input_output.cpp) and writing (output.cpp). Every failure is
+// a UsageError (exit 2) with the OS's reason: "cannot read graph.json: Is a
+// directory".
 
 // The input size limit: no file or stdin larger than this is read (a
 // UsageError naming --max-input-bytes). The default keeps the heaviest
-// command within the memory of a 24 GiB machine: `dcel build` peaks at
-// about 30 times its input, `dcel faces` at 5 to 10 times (docs/formats.md).
+// command within the memory of a 24 GiB machine: `dcel faces` and `dcel
+// build` peak at 4 to 10 times their input, holding the DCEL but never
+// their output (docs/formats.md).
 inline constexpr std::uint64_t kDefaultMaxInputBytes = std::uint64_t{512} << 20;
 void set_max_input_bytes(std::uint64_t bytes);
 [[nodiscard]] std::uint64_t max_input_bytes();
@@ -72,6 +75,21 @@ void write_stdout(std::string_view text);
 // Creates or truncates the file and writes all of text to it; UsageError
 // when it cannot.
 void write_file(const std::string& path, std::string_view text);
+
+// A writer that hands its text to a sink a piece at a time (the library's
+// streaming writers, dcel/io/text_sink.hpp), e.g.
+//   stream_stdout([&](const io::TextSink& sink) { io::write_faces_of(d, sink); });
+using Producer = std::function<void(const io::TextSink&)>;
+
+// What `produce` writes, to stdout or to the file as it comes, in writes
+// of 256 KiB, so that a large output is never held whole; the failures of
+// write_stdout and write_file. A failure once output has begun (a write
+// that fails, or `produce` throwing) cannot take back what was written:
+// stdout or the file then holds the output's first part, cut anywhere,
+// and the command reports the error and fails (docs/formats.md, "Limits
+// and errors").
+void stream_stdout(const Producer& produce);
+void stream_file(const std::string& path, const Producer& produce);
 
 // Flushes what the C and C++ streams hold for stdout (CLI11 prints help
 // through std::cout); the OS's reason when that fails, empty otherwise.

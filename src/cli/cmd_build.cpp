@@ -1,7 +1,8 @@
-// dcel build [GRAPH|-]: the whole DCEL as a dump (see docs/formats.md).
+// dcel build [GRAPH|-]: the whole DCEL as a dump (see docs/formats.md),
+// streamed from the DCEL as it is written: the dump is about 10 times the
+// input, too large to hold whole on top of the DCEL.
 #include "commands.hpp"
 #include "dcel/build.hpp"
-#include "dcel/dump.hpp"
 #include "dcel/io/dcel_json.hpp"
 
 namespace dcel::cli {
@@ -14,9 +15,9 @@ void add_build_command(CLI::App& app, Action& action) {
     cmd->add_flag("--compact", *compact, "Print the dump on one line");
     cmd->callback([&action, path, compact] {
         action = [path, compact] {
-            const PlanarGraph g = load_graph(*path);
-            const Dcel d = build_dcel(*path, g);
-            write_stdout(io::write_dump(to_dump(d), *compact ? io::DumpStyle::Compact : io::DumpStyle::Lines));
+            const Dcel d = build_dcel(*path, load_graph(*path));
+            const io::DumpStyle style = *compact ? io::DumpStyle::Compact : io::DumpStyle::Lines;
+            stream_stdout([&](const io::TextSink& sink) { io::write_dump_of(d, style, sink); });
             return kExitOk;
         };
     });

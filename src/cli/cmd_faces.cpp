@@ -21,9 +21,9 @@ void add_faces_command(CLI::App& app, Action& action) {
         ->type_name("KIND");
     cmd->callback([&action, path, kind] {
         action = [path, kind] {
-            const PlanarGraph g = load_graph(*path);
-            const Dcel d = build_dcel(*path, g);
-            write_stdout(check::reference_answer(d, *check::answer_kind_from_name(*kind)));
+            const Dcel d = build_dcel(*path, load_graph(*path));
+            const check::AnswerKind k = *check::answer_kind_from_name(*kind);
+            stream_stdout([&](const io::TextSink& sink) { check::write_reference_answer(d, k, sink); });
             return kExitOk;
         };
     });

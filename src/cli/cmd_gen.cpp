@@ -50,7 +50,8 @@ void add_gen_command(CLI::App& app, Action& action) {
             if (!f)
                 throw UsageError("gen: unknown family " + quote_for_message(*family) + "; the families are " +
                                  family_list());
-            write_stdout(io::write_graph(gen::generate({*f, *seed, *vertices})));
+            const PlanarGraph g = gen::generate({*f, *seed, *vertices});
+            stream_stdout([&](const io::TextSink& sink) { io::write_graph(g, sink); });
             return kExitOk;
         };
     });

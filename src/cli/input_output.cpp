@@ -1,14 +1,13 @@
-// Reading inputs under the size limit and writing outputs, with every
-// failure reported (cli_support.hpp).
+// Reading inputs under the size limit, with every failure reported
+// (cli_support.hpp; writing is output.cpp's).
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <iostream>
 #include <memory>
 #include <vector>
 
@@ -53,13 +52,6 @@ public:
         if (owned_ && fd_ >= 0) ::close(fd_);
     }
     [[nodiscard]] int get() const { return fd_; }
-    // Closes it now and returns the OS's reason if that failed (written data
-    // may be reported lost only here, on some file systems), else 0.
-    int close() {
-        const int rc = owned_ && fd_ >= 0 ? ::close(fd_) : 0;
-        fd_ = -1;
-        return rc == 0 ? 0 : errno;
-    }
 
 private:
     int fd_;
@@ -76,23 +68,6 @@ ssize_t read_some(int fd, char* buffer, std::size_t size) {
         if (errno != EAGAIN && errno != EWOULDBLOCK) return -1;
         pollfd p{fd, POLLIN, 0};
         (void)::poll(&p, 1, -1);
-    }
-}
-
-void write_all(int fd, std::string_view text, const std::string& name) {
-    while (!text.empty()) {
-        const ssize_t n = ::write(fd, text.data(), std::min<std::size_t>(text.size(), std::size_t{1} << 30));
-        if (n > 0) {
-            text.remove_prefix(static_cast<std::size_t>(n));
-            continue;
-        }
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-            pollfd p{fd, POLLOUT, 0};
-            (void)::poll(&p, 1, -1);
-            continue;
-        }
-        throw UsageError("cannot write " + name + ": " + os_reason(n < 0 ? errno : EIO));
     }
 }
 
@@ -246,39 +221,6 @@ Dcel build_dcel(const std::string& path, const PlanarGraph& g) {
     StatusLine::set("building the DCEL (" + std::to_string(g.vertices.size()) + " vertices, " +
                     std::to_string(g.edges.size()) + " edges)");
     return with_source(path, [&] { return build(g); });
-}
-
-void write_stdout(std::string_view text) {
-    if (const std::string reason = flush_stdout(); !reason.empty()) {
-        throw UsageError("cannot write to stdout: " + reason);
-    }
-    if (::isatty(STDOUT_FILENO) != 0) {
-        StatusLine::stop();  // the output goes to the terminal the status line is on
-    } else {
-        StatusLine::set("writing the output");
-    }
-    write_all(STDOUT_FILENO, text, "to stdout");
-}
-
-void write_file(const std::string& path, std::string_view text) {
-    const std::string name = display_name(path);
-    int raw = -1;
-    do {
-        raw = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC | O_NOCTTY, 0666);
-    } while (raw < 0 && errno == EINTR);
-    if (raw < 0) throw UsageError("cannot open " + name + " for writing: " + os_reason(errno));
-    FileDescriptor fd(raw, true);
-    write_all(fd.get(), text, name);
-    if (const int err = fd.close(); err != 0) throw UsageError("cannot write " + name + ": " + os_reason(err));
-}
-
-std::string flush_stdout() {
-    errno = 0;
-    std::cout.flush();  // into stdout's buffer, or through it (synced with stdio)
-    int err = errno;
-    if (std::fflush(stdout) != 0 && err == 0) err = errno;
-    if (std::ferror(stdout) != 0 || !std::cout) return os_reason(err != 0 ? err : EIO);
-    return {};
 }
 
 }  // namespace dcel::cli

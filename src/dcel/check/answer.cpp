@@ -9,8 +9,6 @@
 #include "dcel/check/collector.hpp"
 #include "dcel/check/cycles.hpp"
 #include "dcel/format.hpp"
-#include "dcel/io/dcel_json.hpp"
-#include "dcel/io/json_writer.hpp"
 
 namespace dcel::check {
 
@@ -227,35 +225,8 @@ std::optional<std::string> convention_hint(const Dcel& reference, const Answer& 
 }
 
 std::string reference_answer(const Dcel& reference, AnswerKind kind) {
-    switch (kind) {
-        case AnswerKind::Faces: return io::write_faces_of(reference);
-        case AnswerKind::Dump: return io::write_dump(to_dump(reference), io::DumpStyle::Compact);
-        case AnswerKind::Polygons:
-        case AnswerKind::Rings:
-        case AnswerKind::EvenOdd: break;
-    }
-    const bool rings = kind == AnswerKind::Rings;
     std::string out;
-    io::JsonWriter w(out);
-    w.raw(rings ? "{\"rings\": [" : "{\"polygons\": [");
-    const auto regions = reference_regions(reference, kind);
-    for (std::size_t p = 0; p < regions.size(); ++p) {
-        if (p != 0) w.raw(", ");
-        if (!rings) w.raw("[");
-        for (std::size_t r = 0; r < regions[p].size(); ++r) {
-            if (rings && r != 0) break;  // one ring per face
-            if (r != 0) w.raw(", ");
-            w.raw("[");
-            for (std::size_t i = 0; i < regions[p][r].size(); ++i) {
-                if (i != 0) w.raw(", ");
-                w.index(regions[p][r][i]);
-            }
-            w.raw("]");
-        }
-        if (!rings) w.raw("]");
-    }
-    w.raw("]}\n");
-    w.flush();
+    write_reference_answer(reference, kind, [&out](std::string_view text) { out.append(text); });
     return out;
 }
 

@@ -32,6 +32,7 @@
 #include "dcel/dcel.hpp"
 #include "dcel/dump.hpp"
 #include "dcel/geometry/point.hpp"
+#include "dcel/io/text_sink.hpp"
 
 namespace dcel::check {
 
@@ -118,6 +119,10 @@ struct Answer {
 // ...]} with vertex-id rings, one polygon or ring per bounded face in face
 // order. A ring that touches itself is written as one ring.
 [[nodiscard]] std::string reference_answer(const Dcel& reference, AnswerKind kind);
+// The same text, streamed to `sink` a piece of at most 16 KiB at a time
+// (dcel/io/text_sink.hpp), as `dcel faces` prints it: the faces and the dump
+// straight from the DCEL, the regions a face at a time.
+void write_reference_answer(const Dcel& reference, AnswerKind kind, const io::TextSink& sink);
 
 // The bounded faces as polygons (shell first, then holes) or as rings (one
 // ring each), by vertex id: what reference_answer writes.

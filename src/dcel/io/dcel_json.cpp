@@ -125,13 +125,14 @@ void write_id_list(JsonWriter& w, const Ids& ids) {
     w.raw(']');
 }
 
-void write_face(JsonWriter& w, const FaceDump& f) {
+void write_face(JsonWriter& w, HalfEdgeId outer, const std::vector<HalfEdgeId>& inner,
+                const std::vector<VertexId>& isolated) {
     w.raw("{\"outer\": ");
-    w.index(f.outer.index());
+    w.index(outer.index());
     w.raw(", \"inner\": ");
-    write_id_list(w, f.inner);
+    write_id_list(w, inner);
     w.raw(", \"isolated\": ");
-    write_id_list(w, f.isolated);
+    write_id_list(w, isolated);
     w.raw('}');
 }
 
@@ -154,6 +155,64 @@ void write_array_member(JsonWriter& w, std::string_view key, std::size_t count, 
     w.raw(']');
 }
 
+// The records of a dump, read from a DcelDump (DumpOfDump) or straight from
+// a Dcel (DumpOfDcel, what to_dump would copy): one writer for both, so that
+// write_dump_of(d) is write_dump(to_dump(d)) by construction, without the
+// copy (for `dcel build` on a large graph, as much memory as the DCEL).
+struct DumpOfDump {
+    const DcelDump& d;
+    [[nodiscard]] const std::vector<Point>& points() const { return d.vertices; }
+    [[nodiscard]] std::size_t vertex_out_count() const { return d.vertex_out.size(); }
+    [[nodiscard]] HalfEdgeId vertex_out(std::size_t i) const { return d.vertex_out[i]; }
+    [[nodiscard]] std::size_t half_edge_count() const { return d.half_edges.size(); }
+    [[nodiscard]] const HalfEdgeRecord& half_edge(std::size_t i) const { return d.half_edges[i]; }
+    [[nodiscard]] std::size_t face_count() const { return d.faces.size(); }
+    [[nodiscard]] HalfEdgeId outer(std::size_t f) const { return d.faces[f].outer; }
+    [[nodiscard]] const std::vector<HalfEdgeId>& inner(std::size_t f) const { return d.faces[f].inner; }
+    [[nodiscard]] const std::vector<VertexId>& isolated(std::size_t f) const { return d.faces[f].isolated; }
+};
+
+struct DumpOfDcel {
+    const Dcel& d;
+    [[nodiscard]] const std::vector<Point>& points() const { return d.points(); }
+    [[nodiscard]] std::size_t vertex_out_count() const { return d.num_vertices(); }
+    [[nodiscard]] HalfEdgeId vertex_out(std::size_t i) const { return d.out(VertexId(static_cast<Index>(i))); }
+    [[nodiscard]] std::size_t half_edge_count() const { return d.num_half_edges(); }
+    [[nodiscard]] HalfEdgeRecord half_edge(std::size_t i) const {
+        const HalfEdgeId h(static_cast<Index>(i));
+        return {d.origin(h), Dcel::twin(h), d.next(h), d.prev(h), d.face(h)};
+    }
+    [[nodiscard]] std::size_t face_count() const { return d.num_faces(); }
+    [[nodiscard]] HalfEdgeId outer(std::size_t f) const { return d.outer(FaceId(static_cast<Index>(f))); }
+    [[nodiscard]] const std::vector<HalfEdgeId>& inner(std::size_t f) const {
+        return d.inner(FaceId(static_cast<Index>(f)));
+    }
+    [[nodiscard]] const std::vector<VertexId>& isolated(std::size_t f) const {
+        return d.isolated(FaceId(static_cast<Index>(f)));
+    }
+};
+
+template <class Records>
+void write_dump_records(const Records& src, DumpStyle style, const TextSink& sink) {
+    JsonWriter w(sink);
+    const bool lines = style == DumpStyle::Lines;
+    w.raw(lines ? "{\n" : "{");
+    write_array_member(w, "vertices", src.points().size(), style, true,
+                       [&](std::size_t i) { write_point(w, src.points(), i); });
+    write_array_member(w, "vertex_out", src.vertex_out_count(), style, false,
+                       [&](std::size_t i) { w.index(src.vertex_out(i).index()); });
+    write_array_member(w, "half_edges", src.half_edge_count(), style, false,
+                       [&](std::size_t i) { write_half_edge(w, src.half_edge(i)); });
+    write_array_member(w, "faces", src.face_count(), style, false,
+                       [&](std::size_t i) { write_face(w, src.outer(i), src.inner(i), src.isolated(i)); });
+    w.raw(lines ? "\n}\n" : "}\n");
+    w.flush();
+}
+
+TextSink append_to(std::string& out) {
+    return [&out](std::string_view text) { out.append(text); };
+}
+
 }  // namespace
 
 std::string write_faces(const std::vector<std::vector<VertexId>>& cycles) {
@@ -172,7 +231,12 @@ std::string write_faces(const std::vector<std::vector<VertexId>>& cycles) {
 std::string write_faces_of(const Dcel& d) {
     std::string out;
     out.reserve(16 + d.num_half_edges() * 9);  // ids of up to 7 digits and ", "
-    JsonWriter w(out);
+    write_faces_of(d, append_to(out));
+    return out;
+}
+
+void write_faces_of(const Dcel& d, const TextSink& sink) {
+    JsonWriter w(sink);
     w.raw("{\"faces\": [");
     bool first = true;
     for_each_boundary_cycle(d, [&](std::span<const VertexId> origins) {
@@ -182,27 +246,21 @@ std::string write_faces_of(const Dcel& d) {
     });
     w.raw("]}\n");
     w.flush();
-    return out;
 }
 
 std::string write_dump(const DcelDump& dump, DumpStyle style) {
     std::string out;
     out.reserve(64 + dump.vertices.size() * 40 + dump.vertex_out.size() * 12 + dump.half_edges.size() * 80 +
                 dump.faces.size() * 48);
-    JsonWriter w(out);
-    const bool lines = style == DumpStyle::Lines;
-    w.raw(lines ? "{\n" : "{");
-    write_array_member(w, "vertices", dump.vertices.size(), style, true,
-                       [&](std::size_t i) { write_point(w, dump.vertices, i); });
-    write_array_member(w, "vertex_out", dump.vertex_out.size(), style, false,
-                       [&](std::size_t i) { w.index(dump.vertex_out[i].index()); });
-    write_array_member(w, "half_edges", dump.half_edges.size(), style, false,
-                       [&](std::size_t i) { write_half_edge(w, dump.half_edges[i]); });
-    write_array_member(w, "faces", dump.faces.size(), style, false, [&](std::size_t i) { write_face(w, dump.faces[i]); });
-    w.raw(lines ? "\n}\n" : "}\n");
-    w.flush();
+    write_dump(dump, style, append_to(out));
     return out;
 }
+
+void write_dump(const DcelDump& dump, DumpStyle style, const TextSink& sink) {
+    write_dump_records(DumpOfDump{dump}, style, sink);
+}
+
+void write_dump_of(const Dcel& d, DumpStyle style, const TextSink& sink) { write_dump_records(DumpOfDcel{d}, style, sink); }
 
 namespace detail {
 

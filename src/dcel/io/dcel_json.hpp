@@ -26,22 +26,33 @@
 #include "dcel/dcel.hpp"
 #include "dcel/dump.hpp"
 #include "dcel/ids.hpp"
+#include "dcel/io/text_sink.hpp"
 
 namespace dcel::io {
 
-// Both end in "\n". Faces: one line, {"faces": [[0, 1, 2], [0, 2, 1]]}; a null
-// id is written as null.
+// Every writer's text ends in "\n". The forms taking a TextSink
+// (text_sink.hpp) stream the same text as the string forms return, a piece
+// of at most 16 KiB at a time, holding no more than that of it.
+
+// Faces: one line, {"faces": [[0, 1, 2], [0, 2, 1]]}; a null id is written
+// as null.
 [[nodiscard]] std::string write_faces(const std::vector<std::vector<VertexId>>& cycles);
 // The same text as write_faces(boundary_cycles(d)), written straight from the
 // DCEL without building the lists (what `dcel faces` prints). O(E).
 [[nodiscard]] std::string write_faces_of(const Dcel& d);
+void write_faces_of(const Dcel& d, const TextSink& sink);
 
 // Lines: one vertex, vertex_out entry, half-edge or face per line (readable,
 // and diffs show exactly the records that changed). Compact: one line.
 // Numbers are in their shortest round-trip form; null ids are written as null.
-// Throws InvalidInput(BadCoordinate) for a NaN or infinite coordinate.
+// Throws InvalidInput(BadCoordinate) for a NaN or infinite coordinate (when
+// streaming, after the sink took the text before that coordinate).
 enum class DumpStyle { Lines, Compact };
 [[nodiscard]] std::string write_dump(const DcelDump& dump, DumpStyle style = DumpStyle::Lines);
+void write_dump(const DcelDump& dump, DumpStyle style, const TextSink& sink);
+// The text of write_dump(to_dump(d), style), streamed straight from the DCEL
+// without the copy to_dump makes (what `dcel build` prints). O(V + E + F).
+void write_dump_of(const Dcel& d, DumpStyle style, const TextSink& sink);
 
 // The inverse of write_dump (either style); "vertex_out" absent reads as empty.
 [[nodiscard]] DcelDump read_dump(std::string_view text);

@@ -105,7 +105,12 @@ PlanarGraph read_graph(std::string_view text) { return detail::read_graph(text, 
 std::string write_graph(const PlanarGraph& graph) {
     std::string out;
     out.reserve(40 + graph.vertices.size() * 32 + graph.edges.size() * 16);
-    JsonWriter w(out);
+    write_graph(graph, [&out](std::string_view text) { out.append(text); });
+    return out;
+}
+
+void write_graph(const PlanarGraph& graph, const TextSink& sink) {
+    JsonWriter w(sink);
     w.raw("{\"vertices\": [");
     for (std::size_t i = 0; i < graph.vertices.size(); ++i) {
         const Point p = graph.vertices[i];
@@ -128,7 +133,6 @@ std::string write_graph(const PlanarGraph& graph) {
     }
     w.raw("]}\n");
     w.flush();
-    return out;
 }
 
 }  // namespace dcel::io

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "dcel/graph.hpp"
+#include "dcel/io/text_sink.hpp"
 
 namespace dcel::io {
 
@@ -29,6 +30,10 @@ namespace dcel::io {
 // InvalidInput(BadCoordinate) for a NaN or infinite coordinate, which JSON
 // cannot express.
 [[nodiscard]] std::string write_graph(const PlanarGraph& graph);
+// The same text, streamed to `sink` a piece of at most 16 KiB at a time
+// (text_sink.hpp); a NaN or infinite coordinate throws after the sink took
+// the text before it.
+void write_graph(const PlanarGraph& graph, const TextSink& sink);
 
 // A document that is one array of points, [[x, y], ...] (as `dcel locate
 // --points` reads). Throws InvalidInput like read_graph.

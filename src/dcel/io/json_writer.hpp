@@ -1,6 +1,9 @@
-// JsonWriter: the one JSON writer of the library and the CLI. Appends JSON
-// text to a std::string through a fixed buffer, so that the writers' loops do
-// no per-token capacity checks; numbers in their shortest round-trip form.
+// JsonWriter: the one JSON writer of the library and the CLI. Writes JSON
+// text through a fixed buffer, so that the writers' loops do no per-token
+// capacity checks, either onto a std::string or, a buffer at a time, into a
+// TextSink (text_sink.hpp), so that an output of hundreds of megabytes can go
+// to a file or a pipe without being held whole; numbers in their shortest
+// round-trip form.
 #pragma once
 
 #include <charconv>
@@ -10,19 +13,28 @@
 #include <cstring>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "dcel/ids.hpp"
 #include "dcel/io/json_string.hpp"
+#include "dcel/io/text_sink.hpp"
 
 namespace dcel::io {
 
-// Call flush() at the end.
+// Call flush() at the end. The destination gets the buffer whenever it
+// fills (16 KiB) and at flush(); a raw() text longer than the buffer goes to
+// it whole, so no piece is larger than the buffer or the largest raw() text.
 class JsonWriter {
 public:
+    // Appends to `out`.
     // buf_ is left uninitialized: bytes up to used_ are written before they are read.
     // cppcheck-suppress uninitMemberVar
-    explicit JsonWriter(std::string& out) : out_(out) {}
+    explicit JsonWriter(std::string& out) : sink_([&out](std::string_view text) { out.append(text); }) {}
+    // Hands the text to `sink`, which may throw (a failed write): the
+    // exception reaches the writer's caller.
+    // cppcheck-suppress uninitMemberVar
+    explicit JsonWriter(TextSink sink) : sink_(std::move(sink)) {}
     JsonWriter(const JsonWriter&) = delete;
     JsonWriter& operator=(const JsonWriter&) = delete;
     ~JsonWriter() = default;
@@ -36,7 +48,7 @@ public:
         if (text.size() > kSize - used_) {
             flush();
             if (text.size() > kSize) {
-                out_.append(text);
+                sink_(text);
                 return;
             }
         }
@@ -72,8 +84,10 @@ public:
         used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + used_ + kNumberRoom, i).ptr - buf_);
     }
     void flush() {
-        out_.append(buf_, used_);
-        used_ = 0;
+        if (used_ == 0) return;  // a sink is never handed an empty piece
+        const std::size_t n = used_;
+        used_ = 0;  // first: when the sink throws, what it was handed is not handed again
+        sink_(std::string_view(buf_, n));
     }
 
     // ---- Scopes, for documents written member by member (reports): the
@@ -131,7 +145,7 @@ private:
         if (kSize - used_ < n) flush();
     }
 
-    std::string& out_;
+    TextSink sink_;
     std::size_t used_ = 0;
     char buf_[kSize];
 };
