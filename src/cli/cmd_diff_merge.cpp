@@ -18,9 +18,9 @@ struct MergeOptions {
 };
 
 int run_merge(const MergeOptions& o) {
-    std::vector<diff::ShardReport> shards;
     diff::JsonValue merged;
     try {
+        std::vector<diff::ShardReport> shards;
         for (const std::string& path : o.reports) {
             const std::string text = read_input(path);
             try {
@@ -54,8 +54,7 @@ void add_diff_merge_command(CLI::App& app, Action& action) {
         ->required();
     cmd->add_option("--report", o->report, "Write the merged report as JSON to FILE")->type_name("FILE");
     cmd->add_option("--junit", o->junit, "Write JUnit XML to FILE: one test case per distinct failure")->type_name("FILE");
-    cmd->add_option("--html", o->html, "Write the merged report as one self-contained HTML page to FILE")
-        ->type_name("FILE");
+    cmd->add_option("--html", o->html, "Write the merged report as one self-contained HTML page to FILE")->type_name("FILE");
     cmd->callback([&action, o] { action = [o] { return run_merge(*o); }; });
 }
 

@@ -3,7 +3,10 @@
 program with two planted bugs, loads the page in headless Chromium and checks
 the DOM after its script ran, then takes a screenshot for a person to look at.
 
-    html_browser_test.py DCEL_CLI IMPL OUT_DIR
+    html_browser_test.py DCEL_CLI IMPL OUT_DIR [SHARDS]
+
+With SHARDS, the page is the one `dcel diff-merge --html` writes for SHARDS
+runs of --shard K/SHARDS, and the same checks apply.
 
 The command carries a hostile environment assignment, so the page shows
 markup that must stay text. Checks: the verdict and a summary entry per
@@ -90,6 +93,7 @@ def fail(message):
 
 def main():
     cli, impl, out = sys.argv[1], sys.argv[2], os.path.abspath(sys.argv[3])
+    shards = int(sys.argv[4]) if len(sys.argv) > 4 else 0
     browser = chromium()
     if browser is None:
         print("skipped: Chromium not found (Debian's chromium: scripts/install-deps browser; or set DCEL_CHROMIUM)")
@@ -98,9 +102,17 @@ def main():
     page, report = os.path.join(out, "report.html"), os.path.join(out, "report.json")
     impl = "HOSTILE='%s' %s" % (HOSTILE, impl)
     start = time.monotonic()
-    r = subprocess.run([cli, "diff", "--impl", impl, "--stream", "--keep-going", "--cases", "40",
-                        "--html", page, "--report", report],
-                       stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, timeout=600)
+    run = [cli, "diff", "--impl", impl, "--stream", "--keep-going", "--cases", "40"]
+    if shards:
+        parts = [os.path.join(out, "shard-%d.json" % k) for k in range(1, shards + 1)]
+        for k, part in enumerate(parts, 1):
+            subprocess.run(run + ["--shard", "%d/%d" % (k, shards), "--report", part],
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=600)
+        r = subprocess.run([cli, "diff-merge"] + parts + ["--html", page, "--report", report],
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, timeout=600)
+    else:
+        r = subprocess.run(run + ["--html", page, "--report", report],
+                           stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, timeout=600)
     if r.returncode != 1:
         fail("dcel diff exited with %d, expected 1 (failures): %s" % (r.returncode, r.stdout.decode()[-2000:]))
     ran = time.monotonic() - start

@@ -8,7 +8,7 @@ namespace dcel::diff {
 namespace {
 
 // Recursion is bounded by the reader's depth limit (kMaxDepth levels).
-JsonValue read_value(io::JsonReader& r) {
+JsonValue read_value(io::JsonReader& r) {  // NOLINT(misc-no-recursion)
     JsonValue v;
     v.type = r.peek();
     switch (v.type) {
@@ -25,7 +25,7 @@ JsonValue read_value(io::JsonReader& r) {
             r.begin_object("an object");
             while (r.next_member()) {
                 std::string key(r.key());
-                v.members.emplace_back(std::move(key), read_value(r));
+                v.members.push_back({std::move(key), read_value(r)});
             }
             break;
     }

@@ -16,11 +16,15 @@
 
 namespace dcel::diff {
 
-struct JsonValue {
+// A tree: a value holds values (hence NOLINT: its copy is recursive, as
+// deep as the reader's depth limit lets a document be).
+struct JsonValue {  // NOLINT(misc-no-recursion)
+    struct Member;  // a key and its value (a pair of an incomplete type would not compile with every library)
+
     io::JsonType type = io::JsonType::Null;
-    std::string text;                                        // a string's value, unescaped; a number's literal
-    std::vector<JsonValue> items;                            // an array's elements
-    std::vector<std::pair<std::string, JsonValue>> members;  // an object's members, in document order
+    std::string text;              // a string's value, unescaped; a number's literal
+    std::vector<JsonValue> items;  // an array's elements
+    std::vector<Member> members;   // an object's members, in document order
 
     // The member `key` of an object, or null when this is no object or has no such key.
     [[nodiscard]] const JsonValue* find(std::string_view key) const;
@@ -33,6 +37,11 @@ struct JsonValue {
     [[nodiscard]] std::optional<std::uint64_t> count() const;
     // A number as a double, rounded as io::JsonReader::read_double rounds it.
     [[nodiscard]] std::optional<double> number() const;
+};
+
+struct JsonValue::Member {  // NOLINT(misc-no-recursion): see JsonValue
+    std::string key;
+    JsonValue value;
 };
 
 // The whole text as one value; InvalidInput (with a location or a JSON path)

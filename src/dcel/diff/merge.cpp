@@ -30,7 +30,7 @@ void set(JsonValue& object, const std::string& key, JsonValue value) {
             return;
         }
     }
-    object.members.emplace_back(key, std::move(value));
+    object.members.push_back({key, std::move(value)});
 }
 
 // ---- Reading a shard report, strictly: a field missing or of the wrong type
@@ -114,11 +114,12 @@ void check_campaign(const std::vector<ShardReport>& shards) {
                              std::to_string(first.count));
         }
         if (campaign_command(s) != command) {
-            fail(s.name, "another campaign than " + shards[0].name + ": the command lines differ besides --shard and --jobs");
+            fail(s.name,
+                 "another campaign than " + shards[0].name + ": the command lines differ besides --shard and --jobs");
         }
         if (const auto [it, fresh] = seen.emplace(id.index, s.name); !fresh) {
-            fail(s.name, "shard " + std::to_string(id.index) + "/" + std::to_string(id.count) + " again (also " +
-                             it->second + ")");
+            fail(s.name,
+                 "shard " + std::to_string(id.index) + "/" + std::to_string(id.count) + " again (also " + it->second + ")");
         }
     }
     for (std::uint64_t k = 1; k <= first.count; ++k) {
@@ -177,6 +178,7 @@ JsonValue merged_slow(const std::vector<ShardReport>& shards) {
     JsonValue o{JsonType::Object, {}, {}, {}};
     set(o, "count", number(total));
     std::vector<JsonValue> items;
+    items.reserve(cases.size());
     for (auto& c : cases) items.push_back(std::move(c.second));
     set(o, "cases", array(std::move(items)));
     return o;
@@ -189,7 +191,6 @@ struct KeyInShard {
     const ShardReport* shard = nullptr;
     const JsonValue* failure = nullptr;  // the shard's failure it was counted as
     bool founds = false;                 // the key that made that failure
-    std::string coordinates;
     std::uint64_t occurrences = 0;
     std::vector<std::uint64_t> cases;
 };
@@ -197,6 +198,7 @@ struct KeyInShard {
 // A key over all shards.
 struct Key {
     std::string key;
+    std::string coordinates;  // its coordinate class (a part of the key)
     std::vector<KeyInShard> seen;
     [[nodiscard]] std::uint64_t first_case() const {
         std::uint64_t first = UINT64_MAX;
@@ -216,14 +218,13 @@ std::vector<Key> keys_of(const std::vector<ShardReport>& shards) {
         for (const JsonValue& f : member(s, s.report, "failures", JsonType::Array).items) {
             bool first = true;
             for (const JsonValue& k : member(s, f, "keys", JsonType::Array).items) {
-                KeyInShard in{&s, &f, first, member(s, k, "coordinates", JsonType::String).text,
-                              count_of(s, k, "occurrences"), counts_of(s, k, "cases")};
+                KeyInShard in{&s, &f, first, count_of(s, k, "occurrences"), counts_of(s, k, "cases")};
                 first = false;
                 if (in.cases.empty()) fail(s.name, "a key with no cases");
                 const std::string& name = member(s, k, "key", JsonType::String).text;
                 auto it = std::find_if(keys.begin(), keys.end(), [&](const Key& x) { return x.key == name; });
                 if (it == keys.end()) {
-                    keys.push_back({name, {}});
+                    keys.push_back({name, member(s, k, "coordinates", JsonType::String).text, {}});
                     it = keys.end() - 1;
                 }
                 it->seen.push_back(std::move(in));
@@ -235,7 +236,7 @@ std::vector<Key> keys_of(const std::vector<ShardReport>& shards) {
 }
 
 // The first kMaxListedCases of the union, in order.
-std::vector<std::uint64_t> first_cases(std::set<std::uint64_t> all) {
+std::vector<std::uint64_t> first_cases(const std::set<std::uint64_t>& all) {
     std::vector<std::uint64_t> out(all.begin(), all.end());
     if (out.size() > kMaxListedCases) out.resize(kMaxListedCases);
     return out;
@@ -243,6 +244,7 @@ std::vector<std::uint64_t> first_cases(std::set<std::uint64_t> all) {
 
 JsonValue case_list(const std::vector<std::uint64_t>& cases) {
     std::vector<JsonValue> items;
+    items.reserve(cases.size());
     for (const std::uint64_t n : cases) items.push_back(number(n));
     return array(std::move(items));
 }
@@ -262,7 +264,7 @@ void add_key(Merged& m, const Key& k) {
         cases.insert(in.cases.begin(), in.cases.end());
         occurrences += in.occurrences;
     }
-    const std::string& coordinates = k.seen.front().coordinates;
+    const std::string& coordinates = k.coordinates;
     JsonValue record{JsonType::Object, {}, {}, {}};
     set(record, "key", text(k.key));
     set(record, "coordinates", text(coordinates));
@@ -279,12 +281,12 @@ JsonValue merged_failures(const std::vector<ShardReport>& shards) {
     for (const Key& k : keys_of(shards)) {
         const KeyInShard& first = k.first_seen();
         const std::string& signature = member(*first.shard, *first.failure, "signature", JsonType::String).text;
-        auto it = std::find_if(failures.begin(), failures.end(), [&](const Merged& m) {
-            return m.failure.find("signature")->text == signature;
-        });
+        auto it = std::find_if(failures.begin(), failures.end(),
+                               [&](const Merged& m) { return m.failure.find("signature")->text == signature; });
         if (it == failures.end()) {
             if (!first.founds) {
-                fail(first.shard->name, "key \"" + k.key + "\" comes first in this shard but joined a failure found before it");
+                fail(first.shard->name,
+                     "key \"" + k.key + "\" comes first in this shard but joined a failure found before it");
             }
             failures.push_back({*first.failure, {}, {}, {}, 0});
             it = failures.end() - 1;
@@ -346,7 +348,8 @@ JsonValue merged_run(const std::vector<ShardReport>& shards, JsonValue failures)
     return out;
 }
 
-void write_value(io::JsonWriter& w, const JsonValue& v, int depth) {
+// Recursion: as deep as the document, which the reader bounded.
+void write_value(io::JsonWriter& w, const JsonValue& v, int depth) {  // NOLINT(misc-no-recursion)
     using Layout = io::JsonWriter::Layout;
     const Layout layout = depth < 2 ? Layout::Lines : Layout::Inline;
     switch (v.type) {
@@ -430,8 +433,9 @@ std::string merged_summary(const JsonValue& merged) {
     }
     s << "dcel diff-merge: " << count(n, "distinct failure") << " in " << cases << " (" << from << ")\n";
     for (const JsonValue& f : failures->items) {
-        s << "  " << num(f, "id") << ". " << str(f, "label") << ": " << count(num(f, "occurrences"), "case") << " in "
-          << classes_text(f) << ", shrunk to " << shrunk_size(f) << "\n";
+        const JsonValue* outcome = f.find("outcome");  // on the counterexample, as dcel diff's summary says it
+        s << "  " << num(f, "id") << ". " << (outcome != nullptr ? str(*outcome, "label") : str(f, "label")) << ": "
+          << count(num(f, "occurrences"), "case") << " in " << classes_text(f) << ", shrunk to " << shrunk_size(f) << "\n";
         s << "     replay: " << str(f, "replay") << "\n";
     }
     return s.str();
@@ -458,7 +462,8 @@ std::string merged_junit(const JsonValue& merged) {
         if (outcome != nullptr) {
             body << "the command says (" << str(*outcome, "label") << "):\n  " << str(*outcome, "stdout") << "\n";
             if (const JsonValue* d = outcome->find("differences"); d != nullptr) {
-                for (const JsonValue& diff : d->items) body << "[" << str(diff, "kind") << "] " << str(diff, "message") << "\n";
+                for (const JsonValue& diff : d->items)
+                    body << "[" << str(diff, "kind") << "] " << str(diff, "message") << "\n";
             }
         }
         body << "replay the case:\n  " << str(f, "replay") << "\n";

@@ -30,7 +30,7 @@ constexpr std::size_t kShownCases = 20;     // case numbers listed per failure
 // ---- The report's tree, read leniently: a missing field reads as empty.
 
 const JsonValue& at(const JsonValue& v, std::string_view key) {
-    static const JsonValue kMissing;
+    static const JsonValue kMissing{};
     const JsonValue* p = v.find(key);
     return p != nullptr ? *p : kMissing;
 }
@@ -179,6 +179,12 @@ std::string run_html(const JsonValue& report) {
     const std::string stopped = str(report, "stopped_by");
     std::string out = "<dl>\n";
     out += fact("command", "<code>" + text(report, "command") + "</code>");
+    if (const std::uint64_t shards = num(report, "shards"); shards > 0) {
+        out += fact("shards", html_text(std::to_string(shards) + " reports of --shard K/" + std::to_string(shards) +
+                                        ", joined by dcel diff-merge (the time is the longest shard's)"));
+    } else if (const std::string shard = str(report, "shard"); !shard.empty()) {
+        out += fact("shard", html_text(shard + ": the cases i with i mod N = K - 1"));
+    }
     out += fact("answer kind", kind.empty() ? "detected from each answer" : html_text(kind));
     out += fact("cases",
                 html_text(std::to_string(num(report, "cases_run")) + " run, " + std::to_string(num(report, "checked")) +
@@ -319,8 +325,8 @@ std::string answers_html(const FailureView& v) {
     const std::string reference = str(v.f, "reference");
     std::string out = "<div class=\"cols\">\n<div class=\"ref\">\n<h3>The reference's answer (" +
                       text(v.outcome, "answer_kind") + ")</h3>\n" + html_block(reference);
-    std::string ignored;
     if (v.reference && v.kind) {
+        std::string ignored;
         if (const auto shapes = shapes_of(reference, v.kind, *v.reference, {}, ignored)) {
             out += shapes_html(*shapes, *v.kind, "reference");
         }

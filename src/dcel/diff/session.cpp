@@ -203,12 +203,11 @@ private:
             ++result_.skipped;
             return true;
         }
-        std::optional<Case>& c = r.c;
-        result_.large_cases += c->spec.large ? 1 : 0;
-        report_progress(i, *c);
-        const std::size_t size = c->graph.vertices.size() + c->graph.edges.size();
+        result_.large_cases += r.c->spec.large ? 1 : 0;
+        report_progress(i, *r.c);
+        const std::size_t size = r.c->graph.vertices.size() + r.c->graph.edges.size();
         const milliseconds limit = r.limit;
-        Outcome outcome = judge(build(c->graph), r.run, limit_as(limit), judging_);
+        Outcome outcome = judge(build(r.c->graph), r.run, limit_as(limit), judging_);
         const milliseconds took = r.took;
         worker_ = r.worker;
         if (outcome.skipped) {
@@ -221,8 +220,8 @@ private:
                 speed_.record(size, took);
             }
             slowest_pass_ = std::max(slowest_pass_, took);
-            if (took > o_.limits.timeout) note_slow(*c, took, limit);
-            remember(std::move(*c));
+            if (took > o_.limits.timeout) note_slow(*r.c, took, limit);
+            remember(std::move(*r.c));
             return true;
         }
         if (i == first && could_not_run(outcome)) {
@@ -231,7 +230,7 @@ private:
             throw ProcessError("cannot run --impl '" + o_.impl + "': /bin/sh " + describe_end(outcome.run, o_.limits) +
                                (why.empty() ? "" : ": " + printable(why, 300)));
         }
-        on_failure(std::move(*c), std::move(outcome), limit);
+        on_failure(std::move(*r.c), std::move(outcome), limit);
         if (!o_.keep_going) {
             result_.stopped_by = StopReason::FirstFailure;
             return false;
