@@ -30,9 +30,9 @@ struct SeedRun {
 
 // expect: words of which a failure message must hold at least one.
 SeedRun run_seeds(const std::function<::testing::AssertionResult(const CheckOptions&)>& check,
-                  const std::vector<std::string>& expect) {
+                  const std::vector<std::string>& expect, int seeds = kSeeds) {
     SeedRun run;
-    for (int seed = 1; seed <= kSeeds; ++seed) {
+    for (int seed = 1; seed <= seeds; ++seed) {
         const auto start = std::chrono::steady_clock::now();
         const ::testing::AssertionResult result = check(CheckOptions{.seed = static_cast<std::uint64_t>(seed)});
         run.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -90,11 +90,16 @@ TEST(CheckTestingSeeds, TinyCoordinatesReadAsZeroAreCaughtOnEverySeed) {
     EXPECT_EQ(run.caught, kSeeds);
 }
 
+// 8 seeds, not 20: shrinking a clamped graph of up to 800 vertices through
+// the exact oracles costs about 7 s a seed in CI's sanitized build (0.1 s
+// with gcc -O2). All 20 were caught when measured (docs/library.md).
 TEST(CheckTestingSeeds, HugeCoordinatesClampedAreCaughtOnEverySeed) {
+    constexpr int kHugeSeeds = 8;
     const SeedRun run = run_seeds(
-        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::huge_faces, o); }, {});
-    report("coordinates clamped to 1e200 (faces)", run);
-    EXPECT_EQ(run.caught, kSeeds);
+        [](const CheckOptions& o) { return dcel::testing::faces_solver_agrees(planted::huge_faces, o); }, {}, kHugeSeeds);
+    std::printf("%-40s caught on %2d of %d seeds in %.2f s\n", "coordinates clamped to 1e200 (faces)", run.caught,
+                kHugeSeeds, run.seconds);
+    EXPECT_EQ(run.caught, kHugeSeeds);
 }
 
 TEST(CheckTestingSeeds, HoleInTheWrongFaceIsCaughtOnEverySeed) {
