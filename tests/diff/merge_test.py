@@ -6,7 +6,7 @@ prints one line "ok ..." or "FAIL ...", then a count; exit 1 on a failure.
 
 Refused, with one line and exit 2: a missing shard, a shard given twice, a
 report that is no shard's, a file that is not JSON, shards of two campaigns,
-a report missing a field. Carried: the skip reasons of a program that skips
+a report missing a field, a "shard" that is not K/N. Carried: the skip reasons of a program that skips
 (summed across shards, a run that agrees), and JUnit and JSON that the
 schema validator accepts.
 """
@@ -74,6 +74,12 @@ with tempfile.TemporaryDirectory() as tmp:
     with open(broken, "w") as f:
         json.dump(doc, f)
     refused("another format", [broken, a[1], a[2]], "not a dcel diff report")
+    for shard in ("1x/3", "-1/3", "1/3/3", "0/3", "4/3", "/3"):
+        doc = json.load(open(a[0]))
+        doc["shard"] = shard
+        with open(broken, "w") as f:
+            json.dump(doc, f)
+        refused(f"shard {shard!r}", [broken, a[1], a[2]], '"shard" is not K/N')
 
     # Carried: JSON and JUnit valid; a failing campaign exits 1.
     merged, junit = os.path.join(tmp, "merged.json"), os.path.join(tmp, "merged.xml")

@@ -1,6 +1,7 @@
 #include "dcel/diff/merge.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -86,15 +87,17 @@ ShardId shard_of(const ShardReport& s) {
     if (v == nullptr || v->type != JsonType::String) {
         fail(s.name, "not the report of a shard: run dcel diff with --shard K/N");
     }
-    const std::size_t slash = v->text.find('/');
+    // Digits, a slash, digits, nothing else: what dcel diff writes.
+    const std::string& t = v->text;
+    const std::size_t slash = t.find('/');
     ShardId id;
-    try {
-        id.index = std::stoull(v->text.substr(0, slash));
-        id.count = std::stoull(v->text.substr(slash + 1));
-    } catch (const std::exception&) {
+    const char* end = t.data() + t.size();
+    const auto k = std::from_chars(t.data(), t.data() + std::min(slash, t.size()), id.index);
+    const bool k_whole = slash != std::string::npos && k.ec == std::errc() && k.ptr == t.data() + slash;
+    const auto n = k_whole ? std::from_chars(t.data() + slash + 1, end, id.count) : k;
+    if (!k_whole || n.ec != std::errc() || n.ptr != end || id.index < 1 || id.index > id.count) {
         fail(s.name, "\"shard\" is not K/N");
     }
-    if (slash == std::string::npos || id.index < 1 || id.index > id.count) fail(s.name, "\"shard\" is not K/N");
     return id;
 }
 
@@ -399,9 +402,7 @@ std::string classes_text(const JsonValue& failure) {
 
 std::string shrunk_size(const JsonValue& failure) {
     const JsonValue* c = failure.find("counterexample");
-    if (c == nullptr) return "?";
-    const std::uint64_t v = num(*c, "vertices"), e = num(*c, "edges");
-    return std::to_string(v) + (v == 1 ? " vertex, " : " vertices, ") + count(e, "edge");
+    return c == nullptr ? "?" : size_of(num(*c, "vertices"), num(*c, "edges"));
 }
 
 }  // namespace

@@ -19,10 +19,11 @@ std::string seconds(std::chrono::milliseconds ms) {
 
 std::string count(std::size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
-std::string size_of(const PlanarGraph& g) {
-    return std::to_string(g.vertices.size()) + (g.vertices.size() == 1 ? " vertex, " : " vertices, ") +
-           std::to_string(g.edges.size()) + (g.edges.size() == 1 ? " edge" : " edges");
+std::string size_of(std::size_t vertices, std::size_t edges) {
+    return std::to_string(vertices) + (vertices == 1 ? " vertex, " : " vertices, ") + count(edges, "edge");
 }
+
+std::string size_of(const PlanarGraph& g) { return size_of(g.vertices.size(), g.edges.size()); }
 
 std::string without_newline(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();

@@ -35,6 +35,7 @@ void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f)
 [[nodiscard]] std::string count(std::size_t n, const std::string& noun);
 // "5 vertices, 4 edges".
 [[nodiscard]] std::string size_of(const PlanarGraph& g);
+[[nodiscard]] std::string size_of(std::size_t vertices, std::size_t edges);
 // The text without its trailing newlines.
 [[nodiscard]] std::string without_newline(std::string text);
 // The command line of the whole run (the report's "command").

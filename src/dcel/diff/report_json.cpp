@@ -17,6 +17,15 @@ using Layout = JsonWriter::Layout;
 
 std::uint64_t ms(std::chrono::milliseconds t) { return static_cast<std::uint64_t>(t.count()); }
 
+void write_case_numbers(JsonWriter& w, const std::vector<std::size_t>& cases) {
+    w.begin_array();
+    for (const std::size_t n : cases) {
+        w.item();
+        w.count(n);
+    }
+    w.end_array();
+}
+
 void write_slow(JsonWriter& w, const DiffResult& result) {
     w.begin_object();
     w.key("count");
@@ -228,12 +237,7 @@ void write_failure(JsonWriter& w, const DiffOptions& options, const Failure& f) 
     w.key("occurrences");
     w.count(f.occurrences);
     w.key("cases");
-    w.begin_array();
-    for (const std::size_t n : f.cases) {
-        w.item();
-        w.count(n);
-    }
-    w.end_array();
+    write_case_numbers(w, f.cases);
     w.key("keys");
     w.begin_array(Layout::Lines);
     for (const KeySeen& k : f.keys) {
@@ -246,12 +250,7 @@ void write_failure(JsonWriter& w, const DiffOptions& options, const Failure& f) 
         w.key("occurrences");
         w.count(k.occurrences);
         w.key("cases");
-        w.begin_array();
-        for (const std::size_t n : k.cases) {
-            w.item();
-            w.count(n);
-        }
-        w.end_array();
+        write_case_numbers(w, k.cases);
         w.end_object();
     }
     w.end_array();
