@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <condition_variable>
 #include <deque>
+#include <exception>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -89,6 +90,9 @@ private:
         ProcessResult run;
         milliseconds took{};
         std::size_t worker = 0;
+        // A worker's failure to run the command at all (ProcessError: no
+        // pipe, no /bin/sh), rethrown where the case is settled, as without --jobs.
+        std::exception_ptr error;
     };
 
     [[nodiscard]] milliseconds limit_for(const Case& c) {
@@ -149,8 +153,14 @@ private:
                     const bool fresh = restart[w] != 0;
                     restart[w] = 0;
                     lock.unlock();
-                    if (fresh) impls[w]->restart();
-                    Ran r = run_only(i, *impls[w], w);
+                    Ran r;
+                    try {
+                        if (fresh) impls[w]->restart();
+                        r = run_only(i, *impls[w], w);
+                    } catch (...) {
+                        r.worker = w;
+                        r.error = std::current_exception();
+                    }
                     lock.lock();
                     done.emplace(i, std::move(r));
                     changed.notify_all();
@@ -173,6 +183,7 @@ private:
                 changed.wait(lock, [&] { return done.contains(i); });
                 Ran r = std::move(done.at(i));
                 done.erase(i);
+                if (r.error) std::rethrow_exception(r.error);
                 judged = i + 1;
                 paused = true;  // while settling: a new failure is confirmed and shrunk alone
                 changed.notify_all();
