@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <memory>
 #include <string>
 
 #include "dcel/diff/report.hpp"
@@ -184,6 +186,55 @@ TEST(DiffEngine, AFlakyImplementationIsReportedUnshrunk) {
 TEST(DiffEngine, ACommandShCannotRunIsAProcessError) {
     Harness h;
     EXPECT_THROW((void)h.run([](const Call&) { return fake::exited(127, "sh: 1: nope: not found\n"); }), ProcessError);
+}
+
+// A command that cannot be run at all from one case on (no pipe left, no
+// /bin/sh: a ProcessError from the process layer). With --jobs the error
+// rises in a worker's thread; it must end the run as it does without workers,
+// out of run_diff, the workers stopped and joined (escaping its thread it
+// would abort the program). Each worker's implementation here is its own, and
+// only an atomic counter is shared, so the workers race on nothing.
+class StopsStartingAt : public Implementation {
+public:
+    StopsStartingAt(std::atomic<std::size_t>& runs, std::size_t from) : runs_(runs), from_(from) {}
+    ProcessResult run(const std::string& text, milliseconds) override { return run(text); }
+    ProcessResult run(const std::string& text) override {
+        if (runs_.fetch_add(1) >= from_) throw ProcessError("cannot create a pipe: Too many open files");
+        ProcessResult r;
+        r.out = fake::right_faces(io::read_graph(text));
+        return r;
+    }
+    void restart() override {}
+    [[nodiscard]] std::size_t starts() const override { return 0; }
+
+private:
+    std::atomic<std::size_t>& runs_;
+    std::size_t from_;
+};
+
+TEST(DiffEngine, AWorkerThatCannotRunTheCommandEndsTheRunWithItsError) {
+    for (const std::size_t jobs : {std::size_t{1}, std::size_t{2}, std::size_t{4}}) {
+        for (const std::size_t from : {std::size_t{0}, std::size_t{7}}) {
+            SCOPED_TRACE("--jobs " + std::to_string(jobs) + ", failing from run " + std::to_string(from));
+            std::atomic<std::size_t> runs{0};
+            fake::FakeClock clock;
+            DiffOptions o;
+            o.impl = "fake";
+            o.cases = 40;
+            o.jobs = jobs;
+            o.schedule.large_vertices = 0;
+            const ImplementationFactory make = [&](const ProcessLimits&) {
+                return std::make_unique<StopsStartingAt>(runs, from);
+            };
+            try {
+                (void)run_diff(o, {}, make, clock);
+                ADD_FAILURE() << "run_diff returned";
+            } catch (const ProcessError& e) {
+                EXPECT_STREQ(e.what(), "cannot create a pipe: Too many open files");
+            }
+            EXPECT_GT(runs.load(), from);
+        }
+    }
 }
 
 TEST(DiffEngine, OnlyCaseReplaysOneCase) {

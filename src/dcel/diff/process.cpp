@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cerrno>
 #include <csignal>
@@ -216,11 +217,38 @@ int above_stdio(int fd) {
 // pipe2 sets close-on-exec atomically: with --jobs, another thread's
 // posix_spawn between pipe() and fcntl() would hand this pipe's write end to
 // its child, and our reader would never see end of file while that lives.
+void close_pipe(Pipe& p) {
+    for (int* fd : {&p.read, &p.write}) {
+        if (*fd >= 0) ::close(*fd);
+        *fd = -1;
+    }
+}
 Pipe make_pipe() {
+    Pipe p;
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) throw ProcessError(std::string("cannot create a pipe: ") + std::strerror(errno));
-    for (int& fd : fds) fd = above_stdio(fd);
-    return {fds[0], fds[1]};
+    p.read = above_stdio(fds[0]);
+    const int read_errno = errno;
+    p.write = above_stdio(fds[1]);
+    if (p.read < 0 || p.write < 0) {
+        const int e = p.read < 0 ? read_errno : errno;
+        close_pipe(p);
+        throw ProcessError(std::string("cannot create a pipe: ") + std::strerror(e));
+    }
+    return p;
+}
+// The three pipes of a child, or none: a pipe made before the one that
+// failed is closed (each failure would leak its descriptors, and a long
+// campaign that meets a passing shortage would run out for good).
+std::array<Pipe, 3> make_pipes() {
+    std::array<Pipe, 3> pipes;
+    try {
+        for (Pipe& p : pipes) p = make_pipe();
+    } catch (const ProcessError&) {
+        for (Pipe& p : pipes) close_pipe(p);
+        throw;
+    }
+    return pipes;
 }
 void set_nonblocking(int fd) { ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK); }
 
@@ -234,7 +262,7 @@ struct Child {
 // SIGINT, SIGTERM and SIGHUP need no reset: a caught signal is reset by exec.
 Child spawn(const std::string& command) {
     install_signal_handling();
-    Pipe in = make_pipe(), out = make_pipe(), err = make_pipe();
+    auto [in, out, err] = make_pipes();
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_adddup2(&actions, in.read, 0);
