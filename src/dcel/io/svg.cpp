@@ -22,10 +22,43 @@ std::string count(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-svg::FrameKind frame_kind(const Dcel& d, SvgFrame f) {
+svg::FrameKind frame_kind(const std::vector<Point>& points, SvgFrame f) {
     if (f == SvgFrame::Exact) return svg::FrameKind::Exact;
     if (f == SvgFrame::Normalised) return svg::FrameKind::Normalised;
-    return svg::choose_frame(d.points(), kLongest);
+    return svg::choose_frame(points, kLongest);
+}
+
+// The vertices' points, then the marks' (each mark's a, then its b): the
+// frame places them all, so a mark outside the drawing widens it.
+std::vector<Point> framed_points(const Dcel& d, const std::vector<SvgMark>& marks) {
+    std::vector<Point> points = d.points();
+    for (const SvgMark& m : marks) {
+        points.push_back(m.a);
+        if (m.b) points.push_back(*m.b);
+    }
+    return points;
+}
+
+// The marks in red, their labels placed with the others'.
+void draw_marks(std::string& out, svg::LabelLayout& labels, const svg::Frame& frame, std::size_t first,
+                const std::vector<SvgMark>& marks, const Box& panel) {
+    if (marks.empty()) return;
+    out += "<g id=\"marks\">\n";
+    std::size_t i = first;
+    for (const SvgMark& m : marks) {
+        const Xy a = frame.at(i++);
+        Xy where = a;
+        if (m.b) {
+            const Xy b = frame.at(i++);
+            svg::arrow(out, {a, b}, {svg::kAnswerInk, 2.2, 0, "6 3", "mark"});
+            where = {(a.x + b.x) / 2, (a.y + b.y) / 2};
+        } else {
+            out += "<circle class=\"mark\" cx=\"" + svg::num(a.x) + "\" cy=\"" + svg::num(a.y) +
+                   "\" r=\"6\" fill=\"none\" stroke=\"" + svg::kAnswerInk + "\" stroke-width=\"2\"/>\n";
+        }
+        if (!m.label.empty()) (void)labels.place(where, 8, m.label, panel, {svg::kAnswerInk, 11, false, "label mark-label"});
+    }
+    out += "</g>\n";
 }
 
 void draw_highlights(std::string& out, const svg::DrawnDcel& g, const std::vector<std::vector<Index>>& cycles) {
@@ -44,7 +77,7 @@ void draw_highlights(std::string& out, const svg::DrawnDcel& g, const std::vecto
 
 // The drawing, then its labels (vertex ids, and face ids unless turned
 // off); returns the labels that found no room.
-std::vector<std::string> paint_drawing(std::string& body, const svg::DrawnDcel& g, const Box& panel,
+std::vector<std::string> paint_drawing(std::string& body, const svg::DrawnDcel& g, const svg::Frame& frame, const Box& panel,
                                        const SvgOptions& options) {
     svg::paint_faces(body, g);
     svg::paint_edges(body, g);
@@ -54,7 +87,8 @@ std::vector<std::string> paint_drawing(std::string& body, const svg::DrawnDcel& 
 
     svg::LabelLayout labels;
     svg::block_drawing(labels, g);
-    std::vector<std::string> left_out = svg::label_vertices(labels, g, panel);
+    std::vector<std::string> left_out = svg::label_vertices(labels, g, panel, options.vertex_names);
+    draw_marks(body, labels, frame, g.dcel().num_vertices(), options.marks, panel);
     if (options.face_ids) {
         const auto faces = svg::label_faces(labels, g, panel);
         left_out.insert(left_out.end(), faces.begin(), faces.end());
@@ -74,6 +108,7 @@ std::vector<std::string> caption_of(const svg::DrawnDcel& g, const svg::Frame& f
                       (options.face_ids ? " (tinted, ids inside; f0 is the unbounded face)" : " (tinted)"));
     caption.emplace_back("arrows: half-edges, on the side of their face; rings: isolated vertices" +
                          std::string(options.highlight_cycles.empty() ? "" : "; red: highlighted cycles"));
+    if (!options.marks.empty()) caption.push_back("red: " + options.marks_caption);
     if (g.bent_edges() > 0) {
         caption.push_back(count(g.bent_edges(), "edge is", "edges are") +
                           " drawn bent: where the frame would draw edges of a vertex in nearly one");
@@ -116,7 +151,8 @@ std::string page(double width, double height, const std::string& title, const st
 // The drawing in a panel, the coordinate table beside it (small graphs),
 // the caption under both.
 std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
-    svg::Frame frame(dcel.points(), frame_kind(dcel, options.frame));
+    const std::vector<Point> points = framed_points(dcel, options.marks);
+    svg::Frame frame(points, frame_kind(points, options.frame));
     const Xy size = frame.size(kLongest);
     const double top = options.title.empty() ? kPad : 36;
     const Box panel{kPad, top, size.x + 2 * kMargin, size.y + 2 * kMargin};
@@ -124,10 +160,12 @@ std::string render_svg(const Dcel& dcel, const SvgOptions& options) {
     const svg::DrawnDcel g(dcel, frame);
 
     std::string body;
-    const std::vector<std::string> left_out = paint_drawing(body, g, panel, options);
+    const std::vector<std::string> left_out = paint_drawing(body, g, frame, panel, options);
     const bool table = dcel.num_vertices() > 0 && dcel.num_vertices() <= options.max_table_vertices;
     Xy table_size{0, 0};
-    if (table) table_size = svg::coordinate_table(body, {panel.right() + 16, panel.y + 8}, dcel.points(), kFont);
+    if (table)
+        table_size = svg::coordinate_table(body, {panel.right() + 16, panel.y + 8}, dcel.points(), kFont,
+                                           options.vertex_names);
     const std::vector<std::string> caption = caption_of(g, frame, options, table, left_out);
 
     double width = std::max(panel.right() + (table ? 16 + table_size.x : 0) + kPad, 420.0);

@@ -19,22 +19,36 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "dcel/dcel.hpp"
+#include "dcel/geometry/point.hpp"
 #include "dcel/ids.hpp"
 
 namespace dcel::io {
 
 enum class SvgFrame : std::uint8_t { Auto, Exact, Normalised };
 
+// Something drawn over the DCEL in red, e.g. an edit about to be made: a
+// point (a ring) or a segment from a to b (dashed, an arrowhead at b), with
+// a label beside it.
+struct SvgMark {
+    Point a;
+    std::optional<Point> b;
+    std::string label;
+};
+
 struct SvgOptions {
     std::string title;                                 // shown on top and as <title>; escaped
     std::vector<std::vector<Index>> highlight_cycles;  // vertex cycles in red; bad ids skipped
     SvgFrame frame = SvgFrame::Auto;
-    bool face_ids = true;                 // label the faces f0, f1, ...
-    std::size_t max_table_vertices = 40;  // the coordinate table for graphs up to this size
+    bool face_ids = true;                   // label the faces f0, f1, ...
+    std::size_t max_table_vertices = 40;    // the coordinate table for graphs up to this size
+    std::vector<std::string> vertex_names;  // labels instead of the vertex ids (e.g. a session's ids); may be empty
+    std::vector<SvgMark> marks;             // drawn in red over everything
+    std::string marks_caption;              // what the marks are, for the caption
 };
 
 [[nodiscard]] std::string render_svg(const Dcel& dcel, const SvgOptions& options = {});

@@ -247,11 +247,12 @@ void block_drawing(LabelLayout& labels, const DrawnDcel& g) {
     }
 }
 
-std::vector<std::string> label_vertices(LabelLayout& labels, const DrawnDcel& g, const Box& allowed) {
+std::vector<std::string> label_vertices(LabelLayout& labels, const DrawnDcel& g, const Box& allowed,
+                                        const std::vector<std::string>& names) {
     std::vector<std::string> left_out;
     if (g.dcel().num_vertices() > kMaxVertexLabels) return {"the vertex ids (more than 2000 vertices)"};
     for (Index v = 0; v < g.dcel().num_vertices(); ++v) {
-        const std::string id = std::to_string(v);
+        const std::string id = v < names.size() ? names[v] : std::to_string(v);
         if (!labels.place(g.at(VertexId(v)), kRing + 1, id, allowed, {"#000000", 11, false, "label vertex-label"})) {
             left_out.push_back("v" + id);
         }
@@ -331,16 +332,19 @@ std::vector<std::string> label_faces(LabelLayout& labels, const DrawnDcel& g, co
 
 namespace {
 
+constexpr std::string_view kTableHeading = "true coordinates";
+
 struct Table {
     std::vector<std::array<std::string, 3>> rows;
     std::array<double, 3> width{};
 };
 
-Table table(const std::vector<Point>& points, double font) {
+Table table(const std::vector<Point>& points, double font, const std::vector<std::string>& names) {
     Table t;
     t.rows.push_back({"v", "x", "y"});
     for (std::size_t v = 0; v < points.size(); ++v) {
-        t.rows.push_back({std::to_string(v), exact_number(points[v].x), exact_number(points[v].y)});
+        t.rows.push_back(
+            {v < names.size() ? names[v] : std::to_string(v), exact_number(points[v].x), exact_number(points[v].y)});
     }
     for (const auto& row : t.rows) {
         for (std::size_t c = 0; c < 3; ++c) t.width[c] = std::max(t.width[c], text_width(row[c], font));
@@ -350,16 +354,20 @@ Table table(const std::vector<Point>& points, double font) {
 
 }  // namespace
 
-Xy coordinate_table_size(const std::vector<Point>& points, double font) {
-    const Table t = table(points, font);
-    return {t.width[0] + t.width[1] + t.width[2] + 24, static_cast<double>(t.rows.size()) * (font + 4) + font + 8};
+Xy coordinate_table_size(const std::vector<Point>& points, double font, const std::vector<std::string>& names) {
+    const Table t = table(points, font, names);
+    // As wide as the columns, or as its heading when that is wider (a few
+    // small integers).
+    const double width = std::max(t.width[0] + t.width[1] + t.width[2] + 24, text_width(kTableHeading, font) + 4);
+    return {width, static_cast<double>(t.rows.size()) * (font + 4) + font + 8};
 }
 
-Xy coordinate_table(std::string& out, Xy top_left, const std::vector<Point>& points, double font) {
-    const Table t = table(points, font);
+Xy coordinate_table(std::string& out, Xy top_left, const std::vector<Point>& points, double font,
+                    const std::vector<std::string>& names) {
+    const Table t = table(points, font, names);
     const double row = font + 4;
     out += "<g id=\"coordinates\" font-family=\"" + std::string(kMonoFont) + "\">\n";
-    text(out, {top_left.x, top_left.y + font}, "true coordinates", font, kNoteInk, "start", true);
+    text(out, {top_left.x, top_left.y + font}, kTableHeading, font, kNoteInk, "start", true);
     double y = top_left.y + font + 4;
     for (std::size_t r = 0; r < t.rows.size(); ++r) {
         y += row;
@@ -372,7 +380,7 @@ Xy coordinate_table(std::string& out, Xy top_left, const std::vector<Point>& poi
         }
     }
     out += "</g>\n";
-    return coordinate_table_size(points, font);
+    return coordinate_table_size(points, font, names);
 }
 
 }  // namespace dcel::io::svg

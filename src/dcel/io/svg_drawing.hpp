@@ -80,14 +80,19 @@ void paint_vertices(std::string& out, const DrawnDcel& g);
 // and the face ids ("f3", inside its face where it fits, "f0" beside the
 // drawing). Returns the ids that found no room (for a note).
 void block_drawing(LabelLayout& labels, const DrawnDcel& g);
-[[nodiscard]] std::vector<std::string> label_vertices(LabelLayout& labels, const DrawnDcel& g, const Box& allowed);
+// `names`, when not empty, are the vertices' labels instead of their ids.
+[[nodiscard]] std::vector<std::string> label_vertices(LabelLayout& labels, const DrawnDcel& g, const Box& allowed,
+                                                      const std::vector<std::string>& names = {});
 [[nodiscard]] std::vector<std::string> label_faces(LabelLayout& labels, const DrawnDcel& g, const Box& allowed);
 
 // Points deep inside a face's drawn rings, deepest first (for its label).
 [[nodiscard]] std::vector<Xy> inner_points(const std::vector<Polyline>& rings, std::size_t count);
 
 // The true coordinates, a row per vertex, at `top_left`; returns its size.
-Xy coordinate_table(std::string& out, Xy top_left, const std::vector<Point>& points, double font = 11);
-[[nodiscard]] Xy coordinate_table_size(const std::vector<Point>& points, double font = 11);
+// `names`, when not empty, labels the rows instead of the vertex ids.
+Xy coordinate_table(std::string& out, Xy top_left, const std::vector<Point>& points, double font = 11,
+                    const std::vector<std::string>& names = {});
+[[nodiscard]] Xy coordinate_table_size(const std::vector<Point>& points, double font = 11,
+                                       const std::vector<std::string>& names = {});
 
 }  // namespace dcel::io::svg
