@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "dcel/build.hpp"
 #include "dcel/check/counterexample_svg.hpp"
+#include "dcel/check/session.hpp"
 #include "dcel/diff/report.hpp"
 #include "dcel/diff/report_html.hpp"
 #include "dcel/diff/session.hpp"
@@ -111,6 +112,15 @@ std::string numbered(const std::string& path, std::size_t id) {
 // inset at each vertex where the answer turns differently (docs/pictures.md).
 std::string svg_of(const DiffOptions& options, const Failure& f) {
     const Counterexample& c = f.example;
+    if (c.session) {
+        // The first step answered wrongly over the state before it (the end
+        // state when only that differs, or when the run did not get that far).
+        const std::size_t k = c.outcome.report.first_wrong_step.value_or(c.session->steps.size());
+        return check::render_session_step_svg(*c.session, k,
+                                              "dcel diff --sessions: " + diff::failure_label(c.outcome) + ", case " +
+                                                  std::to_string(c.original.spec.number) + ", seed " +
+                                                  std::to_string(options.schedule.seed));
+    }
     const Dcel reference = build(c.graph);
     check::CounterexampleDrawing drawing{&c.graph, &reference};
     drawing.title = "dcel diff: " + diff::failure_label(c.outcome) + ", case " + std::to_string(c.original.spec.number) +
@@ -124,7 +134,7 @@ std::string svg_of(const DiffOptions& options, const Failure& f) {
 // The options as typed; empty: the default, which DiffOptions{} holds.
 struct RawOptions {
     std::string cases, seed, time, max_vertices, large_vertices, timeout_ms, shrink_time, only_case, max_failures,
-        print_case, jobs, shard;
+        print_case, jobs, shard, max_steps, large_steps;
     std::string families, exclude_families, coordinates, exclude_coordinates;
     std::string svg, report, junit, html;
     bool keep_going = false, stop_at_first = false;
@@ -160,6 +170,8 @@ void resolve_counts(const RawOptions& raw, DiffOptions& o) {
     if (!raw.max_failures.empty()) o.max_failures = parse_count("--max-failures", raw.max_failures, 1, 1000);
     if (!raw.jobs.empty()) o.jobs = parse_count("--jobs", raw.jobs, 1, diff::kMaxJobs);
     if (!raw.shard.empty()) o.shard = parse_shard(raw.shard);
+    if (!raw.max_steps.empty()) o.schedule.max_steps = parse_count("--max-steps", raw.max_steps, 1, 1000000);
+    if (!raw.large_steps.empty()) o.schedule.large_steps = parse_count("--large-steps", raw.large_steps, 0, 10000000);
 }
 
 void resolve_filters(const RawOptions& raw, DiffOptions& o) {
@@ -195,6 +207,10 @@ void resolve_filters(const RawOptions& raw, DiffOptions& o) {
 DiffOptions resolve(const RawOptions& raw, DiffOptions o) {
     resolve_counts(raw, o);
     resolve_filters(raw, o);
+    if (o.schedule.each_step && !o.schedule.sessions) throw UsageError("--each-step goes with --sessions");
+    if ((!raw.max_steps.empty() || !raw.large_steps.empty()) && !o.schedule.sessions) {
+        throw UsageError("--max-steps and --large-steps go with --sessions");
+    }
     if (!o.time && !o.cases) o.cases = diff::defaults::kCases;  // --time alone: as many as fit
     // A shard keeps going: merged, its failures make the whole run's.
     o.keep_going = (raw.keep_going || o.time.has_value() || o.shard.has_value()) && !raw.stop_at_first;
@@ -231,6 +247,17 @@ void add_schedule_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) 
     cmd.add_option("--exclude-coordinates", raw.exclude_coordinates, "Every coordinate class but these")->type_name("LIST");
     cmd.add_flag("--positional", options.schedule.positional,
                  "Also send some graphs in the positional form [[[x, y], ...], [[u, v], ...]] (default: object form only)");
+    cmd.add_flag("--sessions", options.schedule.sessions,
+                 "Check edits and queries: each case is an edit session (a start graph and steps; docs/checking.md, "
+                 "\"Sessions\") answered with each step's answer and the state after the last");
+    cmd.add_flag("--each-step", options.schedule.each_step,
+                 "With --sessions: ask for the state after every edit too, to pin down the first wrong step");
+    cmd.add_option("--max-steps", raw.max_steps,
+                   "With --sessions: the most steps of the growing sessions" + default_is(d.schedule.max_steps))
+        ->type_name("N");
+    cmd.add_option("--large-steps", raw.large_steps,
+                   "With --sessions: the steps of every 50th session, a large one" + default_is(d.schedule.large_steps))
+        ->type_name("N");
 }
 
 void add_run_options(CLI::App& cmd, RawOptions& raw, DiffOptions& options) {

@@ -18,5 +18,6 @@ void add_gen_command(CLI::App& app, Action& action);
 void add_render_command(CLI::App& app, Action& action);
 void add_diff_command(CLI::App& app, Action& action);
 void add_diff_merge_command(CLI::App& app, Action& action);
+void add_session_command(CLI::App& app, Action& action);
 
 }  // namespace dcel::cli

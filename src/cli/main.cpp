@@ -124,6 +124,7 @@ void add_options_and_commands(CLI::App& app, Action& action, std::uint64_t& max_
     add_locate_command(app, action);
     add_stab_command(app, action);
     add_edit_command(app, action);
+    add_session_command(app, action);
     add_check_command(app, action);
     add_gen_command(app, action);
     add_render_command(app, action);

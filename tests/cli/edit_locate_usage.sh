@@ -69,11 +69,11 @@ usage)
     run "$D --version"
     expect version 0 '^dcel [0-9]+\.[0-9]+\.[0-9]+ \(commit ([0-9a-f]{12}|unknown)\)$'
     run "$D"
-    expect no-command 2 '^dcel: no command given; the commands are faces, build, locate, stab, edit, check, gen, render, diff, diff-merge \(dcel --help\)$'
+    expect no-command 2 '^dcel: no command given; the commands are faces, build, locate, stab, edit, session, check, gen, render, diff, diff-merge \(dcel --help\)$'
     run "$D --bogus"
     expect unknown-global-option 2 '^dcel: unknown option "--bogus"; options go after the command \(dcel --help\)$'
     run "$D facs $map"
-    expect misspelt-command 2 '^dcel: unknown command "facs"; the commands are faces, build, locate, stab, edit, check, gen, render, diff, diff-merge \(dcel --help\)$'
+    expect misspelt-command 2 '^dcel: unknown command "facs"; the commands are faces, build, locate, stab, edit, session, check, gen, render, diff, diff-merge \(dcel --help\)$'
     run "$D faces --frobnicate $map"
     expect unknown-option 2 '^dcel: faces: unexpected argument "--frobnicate" \(dcel faces --help\)$'
     run "$D faces $tmp/nonexistent.json"

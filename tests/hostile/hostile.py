@@ -408,7 +408,7 @@ def options():
 
 def conventions():
     """Usage errors: prefixed dcel:, short, naming the command and its --help."""
-    commands = "faces, build, locate, stab, edit, check, gen, render, diff, diff-merge"
+    commands = "faces, build, locate, stab, edit, session, check, gen, render, diff, diff-merge"
     case("no-command", [], 2, rf"dcel: no command given; the commands are {commands} \(dcel --help\)")
     case("bogus-option", ["--bogus"], 2, r'dcel: unknown option "--bogus"; options go after the command \(dcel --help\)')
     case("misspelt-command", ["facs"], 2, rf'dcel: unknown command "facs"; the commands are {commands} \(dcel --help\)')

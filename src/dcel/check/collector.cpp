@@ -20,6 +20,8 @@ std::string_view kind_name(DifferenceKind k) {
         case DifferenceKind::WrongOrientation: return "wrong-orientation";
         case DifferenceKind::MissingFace: return "missing-face";
         case DifferenceKind::ExtraPolygon: return "extra-polygon";
+        case DifferenceKind::WrongRefusal: return "wrong-refusal";
+        case DifferenceKind::WrongQueryAnswer: return "wrong-query-answer";
     }
     return "unknown";
 }
@@ -30,14 +32,15 @@ namespace {
 // The report order, most telling first: an answer that cannot be read, or one
 // for the wrong vertices or with the wrong points, explains everything after
 // it; a broken dump explains its cycles; a wrong next names the exact place
-// where a walk goes astray.
+// where a walk goes astray; in a session, the first step answered wrongly
+// explains the state after it.
 constexpr std::array<DifferenceKind, kKindCount> kOrder{
-    DifferenceKind::UnreadableAnswer,    DifferenceKind::VertexCount,        DifferenceKind::NotAVertex,
-    DifferenceKind::WrongPoint,          DifferenceKind::BrokenInvariant,    DifferenceKind::NotAnEdge,
-    DifferenceKind::WrongNext,           DifferenceKind::ReversedCycle,      DifferenceKind::WrongOrientation,
-    DifferenceKind::MissingCycle,        DifferenceKind::ExtraCycle,         DifferenceKind::MissingFace,
-    DifferenceKind::ExtraPolygon,        DifferenceKind::WrongOuterBoundary, DifferenceKind::WrongHole,
-    DifferenceKind::WrongIsolatedVertex,
+    DifferenceKind::UnreadableAnswer,   DifferenceKind::VertexCount,      DifferenceKind::NotAVertex,
+    DifferenceKind::WrongPoint,         DifferenceKind::BrokenInvariant,  DifferenceKind::WrongRefusal,
+    DifferenceKind::WrongQueryAnswer,   DifferenceKind::NotAnEdge,        DifferenceKind::WrongNext,
+    DifferenceKind::ReversedCycle,      DifferenceKind::WrongOrientation, DifferenceKind::MissingCycle,
+    DifferenceKind::ExtraCycle,         DifferenceKind::MissingFace,      DifferenceKind::ExtraPolygon,
+    DifferenceKind::WrongOuterBoundary, DifferenceKind::WrongHole,        DifferenceKind::WrongIsolatedVertex,
 };
 }  // namespace
 
@@ -54,6 +57,12 @@ void Collector::add(DifferenceKind k, std::string message, std::vector<Index> ve
         return;
     }
     list.push_back({k, std::move(message), std::move(vertices)});
+}
+
+std::size_t Collector::count() const {
+    std::size_t n = unlisted_;
+    for (const auto& list : by_kind_) n += list.size();
+    return n;
 }
 
 Report Collector::finish() && {

@@ -11,7 +11,7 @@
 
 namespace dcel::check::detail {
 
-inline constexpr std::size_t kKindCount = 16;
+inline constexpr std::size_t kKindCount = 18;
 
 class Collector {
 public:
@@ -19,6 +19,8 @@ public:
     // unlisted: call it once per difference, and skip building the message.
     [[nodiscard]] bool wants(DifferenceKind k);
     void add(DifferenceKind k, std::string message, std::vector<Index> vertices = {});
+    // Differences found so far, listed or not.
+    [[nodiscard]] std::size_t count() const;
     [[nodiscard]] Report finish() &&;
 
 private:

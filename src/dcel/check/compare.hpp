@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -46,13 +47,15 @@ enum class DifferenceKind : std::uint8_t {
     WrongOrientation,     // a ring walked against the orientation its kind fixes (polygons)
     MissingFace,          // a bounded face of the reference that no polygon or ring describes (region kinds)
     ExtraPolygon,         // a polygon or ring that describes no bounded face, or one already described
+    WrongRefusal,         // a session step refused where the reference accepts it, or the other way round
+    WrongQueryAnswer,     // a session query (locate, face_boundary, neighbours, stab) answered otherwise
 };
 
 // "vertex-count", "not-an-edge", "broken-invariant", "missing-cycle",
 // "extra-cycle", "reversed-cycle", "wrong-next", "wrong-hole",
 // "wrong-outer-boundary", "wrong-isolated-vertex", "wrong-point",
 // "unreadable-answer", "not-a-vertex", "wrong-orientation", "missing-face",
-// "extra-polygon".
+// "extra-polygon", "wrong-refusal", "wrong-query-answer".
 [[nodiscard]] std::string_view kind_name(DifferenceKind k);
 
 struct Difference {
@@ -68,7 +71,8 @@ inline constexpr std::size_t kMaxListedPerKind = 100;
 struct Report {
     // Deterministic order, the most telling first: by kind in the order
     // unreadable-answer, vertex-count, not-a-vertex, wrong-point,
-    // broken-invariant, not-an-edge, wrong-next, reversed-cycle,
+    // broken-invariant, wrong-refusal, wrong-query-answer, not-an-edge,
+    // wrong-next, reversed-cycle,
     // wrong-orientation, missing-cycle, extra-cycle, missing-face,
     // extra-polygon, wrong-outer-boundary, wrong-hole, wrong-isolated-vertex;
     // within a kind, in answer order.
@@ -78,6 +82,9 @@ struct Report {
     // ("the answer kind was detected as ...", "every cycle is reversed: the
     // answer may keep faces on the right (--face-on right)").
     std::vector<std::string> notes;
+    // Sessions: the first step whose answer, or the state after it, differs
+    // (the number of steps when only the final state does).
+    std::optional<std::size_t> first_wrong_step;
     [[nodiscard]] bool agrees() const { return differences.empty(); }
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "dcel/check/answer_drawing.hpp"
+#include "dcel/check/session.hpp"
 #include "dcel/diff/failure_class.hpp"
 #include "dcel/error.hpp"
 #include "dcel/format.hpp"
@@ -138,6 +139,31 @@ Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimi
     return worst;
 }
 
+Outcome judge_session(const check::Session& session, const ProcessResult& run, const ProcessLimits& limits) {
+    if (std::optional<Outcome> ended = process_outcome(run, limits)) return std::move(*ended);
+    check::SessionAnswer answer;
+    try {
+        answer = check::read_session_answer(run.out);
+    } catch (const InvalidInput& e) {
+        return failed(FailureKind::Unparsable,
+                      std::string("not a session's answer: ") + e.what() + "; it begins \"" + printable(run.out, 80) + "\"",
+                      run);
+    }
+    check::Report report = check::compare_session(session, answer);
+    Outcome o;
+    o.run = run;
+    o.cycles_only = answer.state && answer.state->cycles_only;
+    if (report.agrees()) {
+        o.report = std::move(report);  // its notes (a state of cycles only) are the run's warnings
+        return o;
+    }
+    o.agrees = false;
+    o.kind = FailureKind::WrongAnswer;
+    o.what = report.differences.front().message;
+    o.report = std::move(report);
+    return o;
+}
+
 std::optional<ProtocolReply> protocol_reply(std::string_view out) {
     try {
         io::JsonReader r(out);
@@ -191,6 +217,8 @@ std::string_view difference_family(check::DifferenceKind k) {
         case DifferenceKind::MissingFace:
         case DifferenceKind::ExtraPolygon: return "faces";
         case DifferenceKind::BrokenInvariant: return "invariants";
+        case DifferenceKind::WrongRefusal: return "refusals";
+        case DifferenceKind::WrongQueryAnswer: return "queries";
         case DifferenceKind::UnreadableAnswer: return "unreadable";
     }
     return "?";

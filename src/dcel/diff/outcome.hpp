@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dcel/check/answer.hpp"
+#include "dcel/check/session.hpp"
 #include "dcel/dcel.hpp"
 #include "dcel/diff/options.hpp"
 #include "dcel/diff/process.hpp"
@@ -43,6 +44,9 @@ struct Outcome {
     // vertex rings (polygons, rings); empty when it could not be read.
     std::vector<std::vector<Index>> answer_cycles;
     std::vector<std::vector<std::vector<Index>>> answer_polygons;
+    // Sessions: the state was given as boundary cycles only, so where holes
+    // and isolated vertices lie went unchecked.
+    bool cycles_only = false;
 };
 
 // How a run reads answers: --answer and the conventions, and, when the kind
@@ -55,6 +59,10 @@ struct AnswerJudging {
 
 [[nodiscard]] Outcome judge(const Dcel& reference, const ProcessResult& run, const ProcessLimits& limits,
                             AnswerJudging& judging);
+
+// A session's run (docs/checking.md, "Sessions"): as judge, with the answer
+// read as a session's and compared with the reference running the session.
+[[nodiscard]] Outcome judge_session(const check::Session& session, const ProcessResult& run, const ProcessLimits& limits);
 
 // The protocol's own answers (docs/checking.md): {"skip": "reason"} for a
 // graph outside the implementation's domain, {"refused": "message"} for one

@@ -1,5 +1,7 @@
 #include "dcel/diff/report.hpp"
+#include "dcel/check/session.hpp"
 #include "dcel/diff/failure_class.hpp"
+#include "dcel/error.hpp"
 
 #include <sstream>
 
@@ -24,6 +26,11 @@ std::string size_of(std::size_t vertices, std::size_t edges) {
 }
 
 std::string size_of(const PlanarGraph& g) { return size_of(g.vertices.size(), g.edges.size()); }
+std::string size_of(const PlanarGraph& g, const std::optional<check::Session>& session) {
+    std::string s = size_of(g);
+    if (session) s += ", " + count(session->steps.size(), "step");
+    return s;
+}
 
 std::string without_newline(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
@@ -58,7 +65,7 @@ void describe_answer(std::ostream& s, const Outcome& o) {
 }
 
 std::string case_text(const Case& c) {
-    return "family " + std::string(gen::family_name(c.spec.params.family)) + ", " + size_of(c.graph) + ", " +
+    return "family " + std::string(gen::family_name(c.spec.params.family)) + ", " + size_of(c.graph, c.session) + ", " +
            std::string(gen::coordinate_class_name(c.coordinates)) + " coordinates";
 }
 
@@ -70,6 +77,41 @@ std::string cases_list(const Failure& f) {
     return s;
 }
 
+// A session counterexample: the session, and where it goes wrong first: the
+// state before that step (the reference's), the step, and both answers to it.
+void session_text(std::ostream& s, const Counterexample& c) {
+    const check::Session& session = *c.session;
+    s << "session (the command's stdin: the start graph and " << count(session.steps.size(), "step") << "):\n  "
+      << without_newline(c.text) << "\n";
+    const std::optional<std::size_t> k = c.outcome.report.first_wrong_step;
+    if (!k || c.outcome.kind != FailureKind::WrongAnswer) return;
+    if (*k >= session.steps.size()) {
+        s << "every step is answered right; the state at the end is not"
+          << (session.each_step ? "" : " (--each-step asks for the state after every edit, to find the first wrong one)")
+          << "\n";
+        return;
+    }
+    check::Session before = session;
+    before.steps.resize(*k);
+    s << "the first step answered wrongly: step " << *k << " (" << check::describe_step(session.steps[*k]) << ")\n";
+    s << "the state before it (the reference's):\n  "
+      << check::write_session_state(check::run_reference_session(before).state) << "\n";
+    const check::ReferenceRun reference = check::run_reference_session(session, session.each_step);
+    s << "the reference's answer to it: " << check::write_step_answer(reference.steps[*k]) << "\n";
+    try {
+        const check::SessionAnswer a = check::read_session_answer(c.outcome.run.out);
+        if (*k < a.steps.size()) s << "the command's answer to it:   " << check::write_step_answer(a.steps[*k]) << "\n";
+        // With --each-step, the states after it too: an edit answered {"ok": true}
+        // on both sides shows its mistake there.
+        if (*k < reference.states.size() && *k < a.states.size() && a.states[*k]) {
+            s << "the reference's state after it:\n  " << check::write_session_state(reference.states[*k]) << "\n";
+            s << "the command's state after it:\n  " << check::write_session_state(*a.states[*k]) << "\n";
+        }
+    } catch (const InvalidInput&) {
+        // judged as a wrong answer, so it was read; nothing to add otherwise
+    }
+}
+
 // How shrinking went: 1-minimal, or stopped by its budget; the kind the
 // counterexample ended with when it is not the first case's.
 void shrink_text(std::ostream& s, const DiffOptions& options, const Counterexample& c) {
@@ -79,8 +121,13 @@ void shrink_text(std::ostream& s, const DiffOptions& options, const Counterexamp
           << " the case did not fail the same way, so the command is not deterministic"
           << (options.stream ? " or depends on more than the last 8 graphs" : "") << "\n";
     } else if (c.steps == 0) {
-        s << "no smaller graph fails the same way (" << count(c.attempts, "attempt") << " in " << seconds(c.shrink_elapsed)
-          << budget << ")\n";
+        s << "no smaller " << (c.session ? "session" : "graph") << " fails the same way (" << count(c.attempts, "attempt")
+          << " in " << seconds(c.shrink_elapsed) << budget << ")\n";
+    } else if (c.session) {
+        s << "shrunk in " << seconds(c.shrink_elapsed) << " (" << count(c.attempts, "attempt") << ", "
+          << count(c.steps, "smaller failing session") << " kept" << budget << ") to a session that fails the same way"
+          << (c.minimal ? "; no single step, start vertex, edge or coordinate simplification of it does (1-minimal)" : "")
+          << "\n";
     } else {
         s << "shrunk in " << seconds(c.shrink_elapsed) << " (" << count(c.attempts, "attempt") << ", "
           << count(c.steps, "smaller failing graph") << " kept" << budget << ") to a graph that fails the same way"
@@ -103,22 +150,34 @@ void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f)
     const Counterexample& c = f.example;
     const Outcome& o = c.outcome;
     shrink_text(s, options, c);
-    s << "counterexample: " << size_of(c.graph) << "\n\n";
+    s << "counterexample: " << size_of(c.graph, c.session) << "\n\n";
     if (!c.prefix.empty()) {
         s << "it fails only after " << count(c.prefix.size(), "other graph")
           << " in the same --stream process (state kept between graphs); first send:\n";
         for (const std::string& p : c.prefix) s << "  " << without_newline(p) << "\n";
         s << "then ";
     }
-    s << "graph (the command's stdin; dcel faces - reads it too):\n  " << without_newline(c.text) << "\n";
-    if (!(c.original.spec.spelling.numbers == gen::Spelling::Numbers::Shortest && !c.original.spec.spelling.positional &&
+    if (c.session) {
+        session_text(s, c);
+    } else {
+        s << "graph (the command's stdin; dcel faces - reads it too):\n  " << without_newline(c.text) << "\n";
+    }
+    // (A session is always written plainly: its spelling is the case's graph's.)
+    if (!c.session &&
+        !(c.original.spec.spelling.numbers == gen::Spelling::Numbers::Shortest && !c.original.spec.spelling.positional &&
           !c.original.spec.spelling.edges_first && !c.original.spec.spelling.compact)) {
         s << "  (written with " << c.original.spec.spelling.describe()
           << "; plainly: " << without_newline(io::write_graph(c.graph)) << ")\n";
     }
     const check::AnswerKind kind = o.answer_kind;
-    s << "reference (" << (kind == check::AnswerKind::Faces ? "dcel faces" : kind_of(o) + ", as dcel check compares them")
-      << "):\n  " << without_newline(check::reference_answer(build(c.graph), kind)) << "\n";
+    if (c.session) {
+        s << "reference (the whole answer):\n  "
+          << without_newline(check::reference_session_answer(*c.session, c.session->each_step)) << "\n";
+    } else {
+        s << "reference ("
+          << (kind == check::AnswerKind::Faces ? "dcel faces" : kind_of(o) + ", as dcel check compares them") << "):\n  "
+          << without_newline(check::reference_answer(build(c.graph), kind)) << "\n";
+    }
     s << "the command says (" << failure_label(o) << "):\n";
     describe_answer(s, o);
     if (o.kind == FailureKind::WrongAnswer) {
@@ -134,8 +193,8 @@ void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f)
         for (const std::string& note : o.report.notes) s << "note: " << note << "\n";
     }
     s << "\nreplay the case (it is shrunk again):\n  " << replay_command(options, c.original.spec.number) << "\n";
-    s << "the original graph (its exact bytes): dcel diff --print-case " << c.original.spec.number
-      << schedule_arguments(options) << "\n";
+    s << "the original " << (c.session ? "session" : "graph") << " (its exact bytes): dcel diff --print-case "
+      << c.original.spec.number << schedule_arguments(options) << "\n";
     s << "run the command on the counterexample:\n  printf '%s\\n' " << shell_quote(without_newline(c.text)) << " | "
       << options.impl << "\n";
 }
@@ -173,6 +232,10 @@ std::string schedule_arguments(const DiffOptions& options) {
     if (s.max_vertices != defaults.max_vertices) a += " --max-vertices " + std::to_string(s.max_vertices);
     if (s.large_vertices != defaults.large_vertices) a += " --large-vertices " + std::to_string(s.large_vertices);
     if (s.positional) a += " --positional";
+    if (s.sessions) a += " --sessions";
+    if (s.each_step) a += " --each-step";
+    if (s.sessions && s.max_steps != defaults.max_steps) a += " --max-steps " + std::to_string(s.max_steps);
+    if (s.sessions && s.large_steps != defaults.large_steps) a += " --large-steps " + std::to_string(s.large_steps);
     if (!s.families.empty()) {
         a += " --families ";
         for (std::size_t i = 0; i < s.families.size(); ++i)
@@ -246,6 +309,13 @@ void skips_text(std::ostream& s, const DiffResult& result) {
     for (const auto& [reason, n] : result.skip_reasons) s << "  " << n << " x " << reason << "\n";
 }
 
+void cycles_only_text(std::ostream& s, const DiffResult& result) {
+    if (result.cycles_only == 0) return;
+    s << "warning: " << count(result.cycles_only, "session")
+      << " gave the state as boundary cycles only: where holes and isolated vertices lie went unchecked (give face "
+         "records {\"outer\", \"holes\", \"isolated\"})\n";
+}
+
 void slow_text(std::ostream& s, const DiffOptions& options, const DiffResult& result) {
     if (result.slow_count == 0) return;
     s << "performance: " << count(result.slow_count, "case") << " took longer than --timeout-ms "
@@ -292,6 +362,7 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
     std::ostringstream s;
     if (result.failures.empty()) {
         agreement_text(s, options, result);
+        cycles_only_text(s, result);
         skips_text(s, result);
         slow_text(s, options, result);
         return s.str();
@@ -319,7 +390,8 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
         s << "\n--stream: \"CMD --stream\" was started " << result.restarts + 1
           << " times: for the run, then afresh to replay failing cases and after each crash or timeout\n";
     }
-    if (result.skipped_by_impl > 0 || result.slow_count > 0) s << "\n";
+    if (result.skipped_by_impl > 0 || result.slow_count > 0 || result.cycles_only > 0) s << "\n";
+    cycles_only_text(s, result);
     skips_text(s, result);
     slow_text(s, options, result);
     if (several) {
@@ -327,7 +399,7 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
           << "\n";
         for (const Failure& f : result.failures) {
             s << "  " << f.id << ". " << label_with_error_line(f.example.outcome) << ": " << count(f.occurrences, "case")
-              << " in " << classes_text(f) << ", shrunk to " << size_of(f.example.graph) << " ("
+              << " in " << classes_text(f) << ", shrunk to " << size_of(f.example.graph, f.example.session) << " ("
               << gen::coordinate_class_name(gen::classify(f.example.graph)) << " coordinates)\n";
         }
     }

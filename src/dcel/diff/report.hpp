@@ -36,6 +36,8 @@ void failure_body(std::ostream& s, const DiffOptions& options, const Failure& f)
 // "5 vertices, 4 edges".
 [[nodiscard]] std::string size_of(const PlanarGraph& g);
 [[nodiscard]] std::string size_of(std::size_t vertices, std::size_t edges);
+// With a session's steps: "5 vertices, 4 edges, 3 steps".
+[[nodiscard]] std::string size_of(const PlanarGraph& g, const std::optional<check::Session>& session);
 // The text without its trailing newlines.
 [[nodiscard]] std::string without_newline(std::string text);
 // The command line of the whole run (the report's "command").

@@ -5,6 +5,7 @@
 // implementation printed.
 #include "dcel/build.hpp"
 #include "dcel/check/answer.hpp"
+#include "dcel/check/session.hpp"
 #include "dcel/diff/report.hpp"
 #include "dcel/io/graph_json.hpp"
 #include "dcel/io/json_writer.hpp"
@@ -80,6 +81,12 @@ void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& resu
     w.string(options.impl);
     w.key("seed");
     w.count(options.schedule.seed);
+    if (options.schedule.sessions) {
+        w.key("sessions");
+        w.boolean(true);
+        w.key("cycles_only_sessions");
+        w.count(result.cycles_only);
+    }
     w.key("shard");
     if (options.shard) {
         w.string(std::to_string(options.shard->index) + "/" + std::to_string(options.shard->count));
@@ -155,8 +162,12 @@ void write_counterexample(JsonWriter& w, const Counterexample& c) {
     w.count(c.graph.edges.size());
     w.key("text");
     w.string(c.text);
-    w.key("graph");
+    w.key("graph");  // a session's start graph
     w.raw(without_newline(io::write_graph(c.graph)));
+    if (c.session) {
+        w.key("steps");
+        w.count(c.session->steps.size());
+    }
     w.end_object();
 }
 
@@ -274,7 +285,8 @@ void write_failure(JsonWriter& w, const DiffOptions& options, const Failure& f) 
     w.key("outcome");
     write_outcome(w, c.outcome);
     w.key("reference");
-    w.string(without_newline(check::reference_answer(build(c.graph), c.outcome.answer_kind)));
+    w.string(without_newline(c.session ? check::reference_session_answer(*c.session, c.session->each_step)
+                                       : check::reference_answer(build(c.graph), c.outcome.answer_kind)));
     w.key("replay");
     w.string(replay_command(options, c.original.spec.number));
     w.end_object();

@@ -1,4 +1,5 @@
 #include "dcel/diff/schedule.hpp"
+#include "dcel/gen/session.hpp"
 
 #include <algorithm>
 #include <array>
@@ -89,9 +90,33 @@ CaseSpec case_spec(const Schedule& s, std::size_t i) {
     return spec;
 }
 
+namespace {
+
+// A session case: the case's graph (its family, size and coordinate class)
+// as the start, and steps drawn against the reference.
+std::optional<Case> make_session_case(const Schedule& s, Case c) {
+    const std::size_t round = c.spec.number / s.chosen_families().size();
+    gen::SessionParams p;
+    p.graph = c.spec.params;
+    p.seed = mix(c.spec.params.seed ^ 0x5e55ULL);
+    p.steps = c.spec.large ? s.large_steps : std::min<std::size_t>(1 + 2 * round, std::max<std::size_t>(s.max_steps, 1));
+    if (c.spec.params.family != gen::Family::NearDegenerate) p.coordinates = c.spec.coordinates;
+    check::Session session = gen::generate_session(p);
+    session.each_step = s.each_step;
+    c.coordinates = gen::classify(session.start);
+    if (!s.allows(c.coordinates)) return std::nullopt;
+    c.graph = session.start;
+    c.text = spell(session);
+    c.session = std::move(session);
+    return c;
+}
+
+}  // namespace
+
 std::optional<Case> make_case(const Schedule& s, std::size_t i) {
     Case c;
     c.spec = case_spec(s, i);
+    if (s.sessions) return make_session_case(s, std::move(c));
     gen::Params p = c.spec.params;
     // Near-degenerate graphs come with their own coordinates: a few tries for
     // one in an allowed class. Every other family gives small integers, which
@@ -114,5 +139,7 @@ std::optional<Case> make_case(const Schedule& s, std::size_t i) {
 }
 
 std::string spell(const PlanarGraph& g, const CaseSpec& spec) { return gen::write_spelled(g, spec.spelling); }
+
+std::string spell(const check::Session& s) { return check::write_session(s); }
 
 }  // namespace dcel::diff

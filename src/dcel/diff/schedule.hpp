@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "dcel/check/session.hpp"
 #include "dcel/gen/coordinates.hpp"
 #include "dcel/gen/generate.hpp"
 #include "dcel/gen/spelling.hpp"
@@ -33,6 +34,13 @@ struct Schedule {
     std::vector<gen::CoordinateClass> classes;  // allowed; empty: all
     bool one_line = false;                      // --stream: no newlines inside a graph
     bool positional = false;                    // some graphs in the positional form (--positional)
+    // Sessions (--sessions): each case is an edit session on the case's
+    // graph, of 1 + 2 * (i / F) steps up to max_steps (large cases:
+    // large_steps), with states after every edit asked for when each_step.
+    bool sessions = false;
+    bool each_step = false;
+    std::size_t max_steps = 24;
+    std::size_t large_steps = 200;
     [[nodiscard]] std::vector<gen::Family> chosen_families() const;
     [[nodiscard]] bool allows(gen::CoordinateClass c) const;
 };
@@ -50,7 +58,8 @@ struct CaseSpec {
 
 struct Case {
     CaseSpec spec;
-    PlanarGraph graph;
+    PlanarGraph graph;                                                       // a session's start graph
+    std::optional<check::Session> session;                                   // --sessions
     gen::CoordinateClass coordinates = gen::CoordinateClass::SmallIntegers;  // what it has
     std::string text;                                                        // the exact bytes the command reads
 };
@@ -62,5 +71,7 @@ struct Case {
 // A graph written in a case's spelling (shrunk graphs keep the spelling of
 // the case they came from, so a reader's bug stays visible).
 [[nodiscard]] std::string spell(const PlanarGraph& g, const CaseSpec& spec);
+// A session's document, one line.
+[[nodiscard]] std::string spell(const check::Session& s);
 
 }  // namespace dcel::diff

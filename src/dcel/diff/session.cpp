@@ -13,6 +13,7 @@
 #include "dcel/build.hpp"
 #include "dcel/diff/speed.hpp"
 #include "dcel/error.hpp"
+#include "dcel/gen/session.hpp"
 #include "dcel/io/graph_json.hpp"
 
 namespace dcel::diff {
@@ -218,7 +219,7 @@ private:
         report_progress(i, *r.c);
         const std::size_t size = r.c->graph.vertices.size() + r.c->graph.edges.size();
         const milliseconds limit = r.limit;
-        Outcome outcome = judge(build(r.c->graph), r.run, limit_as(limit), judging_);
+        Outcome outcome = judge_case(*r.c, r.run, limit_as(limit));
         const milliseconds took = r.took;
         worker_ = r.worker;
         if (outcome.skipped) {
@@ -226,6 +227,7 @@ private:
             return true;
         }
         if (outcome.agrees) {
+            if (outcome.cycles_only) ++result_.cycles_only;
             {
                 const std::lock_guard<std::mutex> lock(speed_mutex_);
                 speed_.record(size, took);
@@ -251,6 +253,19 @@ private:
             return false;
         }
         return true;
+    }
+
+    // The run of a case judged: a graph against its reference DCEL, a
+    // session against the reference running it.
+    Outcome judge_case(const Case& c, const ProcessResult& r, const ProcessLimits& limits) {
+        if (c.session) return judge_session(*c.session, r, limits);
+        return judge(build(c.graph), r, limits, judging_);
+    }
+
+    // The same for the exact bytes of a case, a candidate or a replay.
+    Outcome judge_text(const std::string& text, const ProcessResult& r, const ProcessLimits& limits) {
+        if (o_.schedule.sessions) return judge_session(check::read_session(text), r, limits);
+        return judge(build(io::read_graph(text)), r, limits, judging_);
     }
 
     [[nodiscard]] ProcessLimits limit_as(milliseconds limit) const {
@@ -341,9 +356,10 @@ private:
     // in two coordinate classes shrinks to the same shape in each.) An
     // unreproduced failure keeps its case's key: its graph is not shrunk.
     static std::string signature(const Counterexample& x) {
+        std::string size = std::to_string(x.graph.vertices.size()) + "v" + std::to_string(x.graph.edges.size()) + "e";
+        if (x.session) size += std::to_string(x.session->steps.size()) + "s";
         return failure_class(x.outcome) + "|" + difference_kinds(x.outcome) + "|" +
-               (x.reproduced ? std::to_string(x.graph.vertices.size()) + "v" + std::to_string(x.graph.edges.size()) + "e"
-                             : "case " + std::to_string(x.original.spec.number));
+               (x.reproduced ? size : "case " + std::to_string(x.original.spec.number));
     }
 
     static void count(Failure& f, KeySeen& k, std::size_t case_number) {
@@ -359,6 +375,7 @@ private:
         x.first = std::move(first);
         x.original = std::move(c);
         x.graph = x.original.graph;
+        x.session = x.original.session;
         x.text = x.original.text;
         x.outcome = x.first;
         reproduce(x);
@@ -407,13 +424,12 @@ private:
     // after `prefix` when there is one, under `limit`), or nothing.
     std::optional<Outcome> fails_same(Implementation& impl, const std::vector<std::string>& prefix, const std::string& text,
                                       const Outcome& like, milliseconds limit) {
-        const PlanarGraph g = io::read_graph(text);
         if (!prefix.empty()) {
             impl.restart();
             for (const std::string& p : prefix) (void)impl.run(p);
         }
         const ProcessResult r = impl.run(text, limit);
-        Outcome o = judge(build(g), r, limit_as(limit), judging_);
+        Outcome o = judge_text(text, r, limit_as(limit));
         if (!same_failure(o, like)) return std::nullopt;
         return o;
     }
@@ -427,7 +443,7 @@ private:
         std::unique_ptr<Implementation> impl;
         Clock::time_point deadline;
         std::unordered_set<std::uint64_t> passed;
-        std::vector<PlanarGraph> accepted;
+        std::vector<std::string> accepted;  // the exact texts of the smaller failing cases, in order
     };
 
     void shrink(Counterexample& x) {
@@ -464,8 +480,7 @@ private:
 
     // Runs one candidate (the graph with the prefix graphs before it); its
     // outcome when it fails the same way as the original.
-    std::optional<Outcome> attempt(Shrinking& s, const PlanarGraph& candidate, const std::vector<std::string>& prefix,
-                                   const std::string& text) {
+    std::optional<Outcome> attempt(Shrinking& s, const std::vector<std::string>& prefix, const std::string& text) {
         const std::uint64_t h = text_hash(text) ^ (prefix.size() * 0x9e3779b97f4a7c15ULL);
         if (s.passed.contains(h)) return std::nullopt;
         ++s.x.attempts;
@@ -479,7 +494,7 @@ private:
             for (const std::string& p : prefix) (void)s.impl->run(p);
         }
         const ProcessResult r = s.impl->run(text, s.limits.timeout);
-        Outcome o = judge(build(candidate), r, s.limits, judging_);
+        Outcome o = judge_text(text, r, s.limits);
         if (!same_failure(o, s.x.first)) {
             s.passed.insert(h);
             if (o.kind == FailureKind::Timeout || o.kind == FailureKind::Crash) s.impl->restart();
@@ -488,21 +503,40 @@ private:
         return o;
     }
 
-    // The failing graph, the prefix (if any) fixed; true when it ended
-    // because no single candidate of the result fails (1-minimal).
+    // The failing graph (or session), the prefix (if any) fixed; true when
+    // it ended because no single candidate of the result fails (1-minimal).
     bool shrink_graph(Shrinking& s) {
         Counterexample& x = s.x;
+        // A candidate taken: x follows it, and a hang's are kept for its confirmation.
+        auto take = [&](std::string text, Outcome o) {
+            if (x.shrink_timeout) s.accepted.push_back(text);
+            x.text = std::move(text);
+            x.outcome = std::move(o);
+            ++x.steps;
+        };
+        if (x.session) {
+            return !gen::shrink_session_greedily(
+                        *x.session,
+                        [&](const check::Session& c) {
+                            std::string text = spell(c);
+                            std::optional<Outcome> o = attempt(s, x.prefix, text);
+                            if (!o) return false;
+                            x.session = c;
+                            x.graph = c.start;
+                            take(std::move(text), std::move(*o));
+                            return true;
+                        },
+                        [&] { return out_of_budget(s); })
+                        .stopped;
+        }
         return !gen::shrink_greedily(
                     x.graph,
                     [&](const PlanarGraph& c) {
-                        const std::string text = spell(c, x.original.spec);
-                        std::optional<Outcome> o = attempt(s, c, x.prefix, text);
+                        std::string text = spell(c, x.original.spec);
+                        std::optional<Outcome> o = attempt(s, x.prefix, text);
                         if (!o) return false;
-                        x.graph = c;  // x follows every candidate taken
-                        x.text = text;
-                        x.outcome = std::move(*o);
-                        ++x.steps;
-                        if (x.shrink_timeout) s.accepted.push_back(c);
+                        x.graph = c;
+                        take(std::move(text), std::move(*o));
                         return true;
                     },
                     [&] { return out_of_budget(s); })
@@ -515,7 +549,7 @@ private:
         for (std::size_t j = 0; j < x.prefix.size() && !out_of_budget(s);) {
             std::vector<std::string> shorter = x.prefix;
             shorter.erase(shorter.begin() + static_cast<std::ptrdiff_t>(j));
-            if (std::optional<Outcome> o = attempt(s, x.graph, shorter, x.text); o && !shorter.empty()) {
+            if (std::optional<Outcome> o = attempt(s, shorter, x.text); o && !shorter.empty()) {
                 x.prefix = std::move(shorter);
                 prefix_cases_.erase(prefix_cases_.begin() + static_cast<std::ptrdiff_t>(j));
                 x.outcome = std::move(*o);
@@ -529,13 +563,14 @@ private:
     // Then each graph of the prefix shrunk, the others fixed.
     void shrink_prefix_graphs(Shrinking& s) {
         Counterexample& x = s.x;
+        if (x.session) return;  // (a session's prefix is other sessions: dropped above, not shrunk)
         for (std::size_t j = 0; j < x.prefix.size() && !out_of_budget(s); ++j) {
             (void)gen::shrink_greedily(
                 prefix_cases_[j].graph,
                 [&](const PlanarGraph& c) {
                     std::vector<std::string> prefix = x.prefix;
                     prefix[j] = spell(c, prefix_cases_[j].spec);
-                    std::optional<Outcome> o = attempt(s, x.graph, prefix, x.text);
+                    std::optional<Outcome> o = attempt(s, prefix, x.text);
                     if (!o) return false;
                     x.prefix = std::move(prefix);
                     x.outcome = std::move(*o);
@@ -547,16 +582,20 @@ private:
     }
 
     // Candidates ran with a shortened timeout; the counterexample must hang
-    // for the whole --timeout-ms. The smallest accepted graph that does is it.
-    void confirm_hang(Counterexample& x, std::vector<PlanarGraph>& accepted) {
+    // for the case's whole limit. The smallest accepted case that does is it.
+    void confirm_hang(Counterexample& x, std::vector<std::string>& accepted) {
         impl_->restart();
-        accepted.insert(accepted.begin(), x.original.graph);
+        accepted.insert(accepted.begin(), x.original.text);
         while (!accepted.empty()) {
-            const PlanarGraph g = std::move(accepted.back());
+            const std::string text = std::move(accepted.back());
             accepted.pop_back();
-            const std::string text = spell(g, x.original.spec);
             if (std::optional<Outcome> o = fails_same(*impl_, x.prefix, text, x.first, x.limit)) {
-                x.graph = g;
+                if (x.session) {
+                    x.session = check::read_session(text);
+                    x.graph = x.session->start;
+                } else {
+                    x.graph = io::read_graph(text);
+                }
                 x.text = text;
                 x.outcome = std::move(*o);
                 return;

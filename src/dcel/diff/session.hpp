@@ -29,12 +29,13 @@ struct Counterexample {
     // --stream state: the graphs (exact text) that had to go first in the same
     // process for the failure to show; empty when it fails alone.
     std::vector<std::string> prefix;
-    PlanarGraph graph;          // the shrunk graph (the original when not reproduced)
-    std::string text;           // its exact bytes, in the case's spelling
-    Outcome outcome;            // on graph
-    std::size_t attempts = 0;   // shrink candidates run
-    std::size_t steps = 0;      // of which kept (each a smaller failing graph)
-    bool budget_spent = false;  // shrinking stopped by --shrink-time or the attempt cap
+    PlanarGraph graph;                      // the shrunk graph (the original when not reproduced); a session's start
+    std::optional<check::Session> session;  // --sessions: the shrunk session
+    std::string text;                       // its exact bytes, in the case's spelling
+    Outcome outcome;                        // on graph
+    std::size_t attempts = 0;               // shrink candidates run
+    std::size_t steps = 0;                  // of which kept (each a smaller failing graph)
+    bool budget_spent = false;              // shrinking stopped by --shrink-time or the attempt cap
     std::chrono::milliseconds shrink_elapsed{};
     // A hang: candidates ran with this shorter timeout (derived from the
     // passing cases' times), and the result was confirmed with the case's
@@ -108,6 +109,9 @@ struct DiffResult {
     // CPU time of dcel itself (generating, writing, building the reference,
     // judging), without the command's: what the reference side costs.
     std::chrono::milliseconds reference_cpu{};
+    // Sessions whose answer gave the state as boundary cycles only: where
+    // holes and isolated vertices lie went unchecked.
+    std::size_t cycles_only = 0;
     // Cases compared with the reference: run, with a graph, and not skipped by the implementation.
     [[nodiscard]] std::size_t checked() const { return cases_run - skipped - skipped_by_impl; }
 };
