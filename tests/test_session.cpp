@@ -310,6 +310,37 @@ TEST(Session, AnEditAnsweredAsAQueryAndAQueryAsAnotherKindAreWrong) {
     EXPECT_TRUE(r.agrees()) << check::report_text(r);
 }
 
+TEST(Session, AQueryMayBeSkippedAndIsThenUncheckedButAnEditMayNot) {
+    // Steps 1 (locate) and 10 (stab) skipped: nothing else is wrong, so the
+    // answer agrees, with a note that counts them.
+    std::string answer = replaced(kRight, R"({"vertex": 4})", R"({"skip": "no point location here"})");
+    answer = replaced(answer, R"({"faces": [null, [3, 0], null]})", R"({"skip": "no stab"})");
+    Report r = compare(kSession, answer);
+    EXPECT_TRUE(r.agrees()) << check::report_text(r);
+    ASSERT_FALSE(r.notes.empty());
+    EXPECT_NE(r.notes.back().find("skipped 1 locate step, 1 stab step"), std::string::npos) << r.notes.back();
+    // A skipped query does not hide a wrong one after it.
+    r = compare(kSession, replaced(answer, R"({"face": [2, 3]})", R"({"face": [0, 1]})"));
+    EXPECT_TRUE(has(r, check::DifferenceKind::WrongQueryAnswer));
+    EXPECT_EQ(r.first_wrong_step, 2U);
+    // An edit cannot be skipped (the states after it would part), even one
+    // the reference refuses.
+    for (const char* edit : {R"({"ok": true}, {"vertex": 4})", R"({"error": "no vertex 9"})"}) {
+        const std::string skipped = std::string(edit).find("error") != std::string::npos
+                                        ? R"({"skip": "later"})"
+                                        : R"({"skip": "later"}, {"vertex": 4})";
+        r = compare(kSession, replaced(kRight, edit, skipped));
+        ASSERT_FALSE(r.agrees()) << edit;
+        EXPECT_NE(r.differences.front().message.find("skips an edit (later)"), std::string::npos)
+            << r.differences.front().message;
+    }
+    // The skip reads back as written, and its reason must be a string.
+    EXPECT_EQ(check::write_step_answer(check::read_session_answer(R"({"steps": [{"skip": "why"}]})").steps[0]),
+              R"({"skip": "why"})");
+    EXPECT_THROW((void)read_session_answer(R"({"steps": [{"skip": true}]})"), InvalidInput);
+    EXPECT_THROW((void)read_session_answer(R"({"steps": [{"skip": "a", "vertex": 1}]})"), InvalidInput);
+}
+
 TEST(Session, BadAnswersAreRefusedWithTheirPlace) {
     for (const char* bad : {R"({"steps": [{}]})", R"({"steps": [{"ok": false}]})", R"({"steps": [{"face": [1]}]})",
                             R"({"steps": [{"holes": []}]})", R"({"steps": [], "state": {"vertices": []}})",

@@ -86,9 +86,12 @@ struct FaceName {
 
 // One step's answer.
 struct StepAnswer {
-    enum class Kind : std::uint8_t { Ok, Error, Vertex, Edge, Face, Boundary, Faces };
+    // Skip: {"skip": "why"}, a query the implementation does not have (a
+    // library without stab); the step goes unchecked. An edit cannot be
+    // skipped (the states after it would part).
+    enum class Kind : std::uint8_t { Ok, Error, Vertex, Edge, Face, Boundary, Faces, Skip };
     Kind kind = Kind::Ok;
-    std::string error;                        // Error: the implementation's message
+    std::string error;                        // Error: the implementation's message; Skip: why
     Index u = kNoIndex, v = kNoIndex;         // Vertex: u; Edge: [u, v]
     FaceName face;                            // Face; Boundary (optional in an answer)
     bool face_given = false;                  // an answer's "face" was there (null included)

@@ -4,6 +4,7 @@
 // then the state: the boundary cycles (each up to rotation), then, face by
 // face, its holes and isolated vertices, and the points.
 #include <algorithm>
+#include <array>
 #include <map>
 #include <string>
 
@@ -100,6 +101,9 @@ public:
         if (!answer_.state && !has_any_state()) {
             report.notes.emplace_back("the answer gives no state: only the steps' answers were checked");
         }
+        if (const std::string skips = skipped_text(); !skips.empty()) {
+            report.notes.push_back("the answer skipped " + skips + " ({\"skip\": ...}): unchecked");
+        }
         if (cycles_only_) {
             report.notes.emplace_back(
                 "the state gives boundary cycles only: where holes and isolated vertices lie went unchecked (give "
@@ -115,11 +119,33 @@ private:
         found = now;
     }
 
+    // "3 stab steps, 1 locate step", or "" when nothing was skipped.
+    [[nodiscard]] std::string skipped_text() const {
+        std::string out;
+        for (std::size_t op = 0; op < kStepOpCount; ++op) {
+            if (skipped_[op] == 0) continue;
+            if (!out.empty()) out += ", ";
+            out += std::to_string(skipped_[op]) + " " + std::string(step_op_name(static_cast<StepOp>(op))) +
+                   (skipped_[op] == 1 ? " step" : " steps");
+        }
+        return out;
+    }
+
     [[nodiscard]] bool has_any_state() const {
         return std::any_of(answer_.states.begin(), answer_.states.end(), [](const auto& s) { return s.has_value(); });
     }
 
     void compare_step(std::size_t i, const SessionStep& step, const StepAnswer& expected, const StepAnswer& got) {
+        if (got.kind == StepAnswer::Kind::Skip) {
+            if (is_query(step.op)) {
+                ++skipped_[static_cast<std::size_t>(step.op)];
+            } else {
+                wrong(i, step,
+                      "the answer skips an edit (" + escape_for_message(got.error, 200) +
+                          "); only queries may be skipped, since the states after an edit would part");
+            }
+            return;
+        }
         const bool ref_refused = expected.kind == StepAnswer::Kind::Error;
         const bool refused = got.kind == StepAnswer::Kind::Error;
         if (ref_refused != refused) {
@@ -201,6 +227,7 @@ private:
             case StepAnswer::Kind::Faces: return "a list of faces";
             case StepAnswer::Kind::Ok: return "ok";
             case StepAnswer::Kind::Error: return "an error";
+            case StepAnswer::Kind::Skip: return "a skip";
         }
         return "?";
     }
@@ -413,6 +440,7 @@ private:
     detail::ReferenceSession ref_;
     detail::Collector out_;
     bool cycles_only_ = false;
+    std::array<std::size_t, kStepOpCount> skipped_{};  // query steps skipped, by operation
     std::optional<std::size_t> first_;
 };
 

@@ -296,8 +296,8 @@ SessionState read_state(JsonReader& r) {
 }
 
 StepAnswer read_step_answer(JsonReader& r, std::optional<SessionState>& state) {
-    static constexpr std::array<std::string_view, 9> kKeys{"ok",    "error", "vertex", "edge", "face",
-                                                           "outer", "holes", "faces",  "state"};
+    static constexpr std::array<std::string_view, 10> kKeys{"ok",    "error", "vertex", "edge",  "face",
+                                                            "outer", "holes", "faces",  "state", "skip"};
     StepAnswer a;
     r.begin_object("a step's answer, an object");
     std::uint64_t seen = 0;
@@ -329,22 +329,25 @@ StepAnswer read_step_answer(JsonReader& r, std::optional<SessionState>& state) {
                 r.begin_array("an array of faces");
                 while (r.next_element()) a.faces.push_back(read_face_name(r));
                 break;
-            default: state = read_state(r); break;
+            case 8: state = read_state(r); break;
+            default: a.error = r.read_string("why the query is skipped, a string"); break;
         }
     }
     const auto has = [&](std::size_t bit) { return (seen & (std::uint64_t{1} << bit)) != 0; };
     const int kinds = static_cast<int>(has(0)) + static_cast<int>(has(1)) + static_cast<int>(has(2)) +
-                      static_cast<int>(has(3)) + static_cast<int>(has(7)) + static_cast<int>(has(4) || has(5) || has(6));
+                      static_cast<int>(has(3)) + static_cast<int>(has(7)) + static_cast<int>(has(9)) +
+                      static_cast<int>(has(4) || has(5) || has(6));
     if (kinds != 1) {
         r.fail(InputErrorKind::Shape,
                R"(a step's answer is one of {"ok": true}, {"error": "..."}, {"vertex": v}, )"
-               R"({"edge": [u, v]}, {"face": ...}, {"outer": ..., "holes": [...]}, {"faces": [...]})");
+               R"({"edge": [u, v]}, {"face": ...}, {"outer": ..., "holes": [...]}, {"faces": [...]}, {"skip": "..."})");
     }
     if (has(0)) a.kind = StepAnswer::Kind::Ok;
     if (has(1)) a.kind = StepAnswer::Kind::Error;
     if (has(2)) a.kind = StepAnswer::Kind::Vertex;
     if (has(3)) a.kind = StepAnswer::Kind::Edge;
     if (has(7)) a.kind = StepAnswer::Kind::Faces;
+    if (has(9)) a.kind = StepAnswer::Kind::Skip;
     if (has(4)) a.kind = StepAnswer::Kind::Face;
     if (has(5) || has(6)) {
         a.kind = StepAnswer::Kind::Boundary;

@@ -295,6 +295,10 @@ void step_answer(io::JsonWriter& w, const StepAnswer& a, const SessionState* aft
             w.key("error");
             w.string(a.error);
             break;
+        case StepAnswer::Kind::Skip:
+            w.key("skip");
+            w.string(a.error);
+            break;
         case StepAnswer::Kind::Vertex:
             w.key("vertex");
             w.index(a.u);

@@ -153,6 +153,12 @@ Outcome judge_session(const check::Session& session, const ProcessResult& run, c
     Outcome o;
     o.run = run;
     o.cycles_only = answer.state && answer.state->cycles_only;
+    for (std::size_t i = 0; i < answer.steps.size() && i < session.steps.size(); ++i) {
+        const check::StepOp op = session.steps[i].op;
+        if (answer.steps[i].kind == check::StepAnswer::Kind::Skip && check::is_query(op)) {
+            ++o.skipped_steps[static_cast<std::size_t>(op)];
+        }
+    }
     if (report.agrees()) {
         o.report = std::move(report);  // its notes (a state of cycles only) are the run's warnings
         return o;

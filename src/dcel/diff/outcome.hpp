@@ -47,6 +47,8 @@ struct Outcome {
     // Sessions: the state was given as boundary cycles only, so where holes
     // and isolated vertices lie went unchecked.
     bool cycles_only = false;
+    // Sessions: query steps the answer skipped ({"skip": ...}), by operation.
+    std::array<std::size_t, check::kStepOpCount> skipped_steps{};
 };
 
 // How a run reads answers: --answer and the conventions, and, when the kind

@@ -3,6 +3,7 @@
 #include "dcel/diff/failure_class.hpp"
 #include "dcel/error.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "dcel/build.hpp"
@@ -316,6 +317,21 @@ void cycles_only_text(std::ostream& s, const DiffResult& result) {
          "records {\"outer\", \"holes\", \"isolated\"})\n";
 }
 
+// Query steps skipped by the answers of agreeing sessions: unchecked, so said.
+void skipped_steps_text(std::ostream& s, const DiffResult& result) {
+    std::string ops;
+    std::size_t total = 0;
+    for (std::size_t op = 0; op < check::kStepOpCount; ++op) {
+        if (result.skipped_steps[op] == 0) continue;
+        total += result.skipped_steps[op];
+        ops += std::string(ops.empty() ? "" : ", ") + std::to_string(result.skipped_steps[op]) + " " +
+               std::string(check::step_op_name(static_cast<check::StepOp>(op)));
+    }
+    if (total == 0) return;
+    s << "warning: the answers skipped " << count(total, "query step") << " ({\"skip\": ...}): " << ops
+      << "; they went unchecked\n";
+}
+
 void slow_text(std::ostream& s, const DiffOptions& options, const DiffResult& result) {
     if (result.slow_count == 0) return;
     s << "performance: " << count(result.slow_count, "case") << " took longer than --timeout-ms "
@@ -363,6 +379,7 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
     if (result.failures.empty()) {
         agreement_text(s, options, result);
         cycles_only_text(s, result);
+        skipped_steps_text(s, result);
         skips_text(s, result);
         slow_text(s, options, result);
         return s.str();
@@ -390,8 +407,11 @@ std::string format_report(const DiffOptions& options, const DiffResult& result) 
         s << "\n--stream: \"CMD --stream\" was started " << result.restarts + 1
           << " times: for the run, then afresh to replay failing cases and after each crash or timeout\n";
     }
-    if (result.skipped_by_impl > 0 || result.slow_count > 0 || result.cycles_only > 0) s << "\n";
+    const bool steps_skipped = std::any_of(result.skipped_steps.begin(), result.skipped_steps.end(),
+                                           [](std::size_t n) { return n > 0; });
+    if (result.skipped_by_impl > 0 || result.slow_count > 0 || result.cycles_only > 0 || steps_skipped) s << "\n";
     cycles_only_text(s, result);
+    skipped_steps_text(s, result);
     skips_text(s, result);
     slow_text(s, options, result);
     if (several) {

@@ -86,6 +86,14 @@ void write_run(JsonWriter& w, const DiffOptions& options, const DiffResult& resu
         w.boolean(true);
         w.key("cycles_only_sessions");
         w.count(result.cycles_only);
+        w.key("skipped_steps");
+        w.begin_object();
+        for (std::size_t op = 0; op < check::kStepOpCount; ++op) {
+            if (result.skipped_steps[op] == 0) continue;
+            w.key(check::step_op_name(static_cast<check::StepOp>(op)));
+            w.count(result.skipped_steps[op]);
+        }
+        w.end_object();
     }
     w.key("shard");
     if (options.shard) {

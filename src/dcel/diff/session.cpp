@@ -228,6 +228,7 @@ private:
         }
         if (outcome.agrees) {
             if (outcome.cycles_only) ++result_.cycles_only;
+            for (std::size_t op = 0; op < check::kStepOpCount; ++op) result_.skipped_steps[op] += outcome.skipped_steps[op];
             {
                 const std::lock_guard<std::mutex> lock(speed_mutex_);
                 speed_.record(size, took);

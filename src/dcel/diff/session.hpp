@@ -112,6 +112,9 @@ struct DiffResult {
     // Sessions whose answer gave the state as boundary cycles only: where
     // holes and isolated vertices lie went unchecked.
     std::size_t cycles_only = 0;
+    // Query steps the answers of agreeing sessions skipped ({"skip": ...}),
+    // by operation: unchecked.
+    std::array<std::size_t, check::kStepOpCount> skipped_steps{};
     // Cases compared with the reference: run, with a graph, and not skipped by the implementation.
     [[nodiscard]] std::size_t checked() const { return cases_run - skipped - skipped_by_impl; }
 };
