@@ -2,8 +2,8 @@
 rest). The CMake build is the project's own: the library, the generators and
 python/src, in Release, nothing else (no tests, no CLI), into build-python/
 (next to the developers' build/ directories, and ignored by git like them).
-CMAKE_BUILD_PARALLEL_LEVEL sets the jobs (default 2); a ccache found on PATH
-is used."""
+CMAKE_BUILD_PARALLEL_LEVEL sets the jobs (default 2), CMAKE_BUILD_TYPE the
+build type (default Release); a ccache found on PATH is used."""
 import os
 import shutil
 import subprocess
@@ -21,7 +21,7 @@ class CMakeBuild(build_ext):
         build_dir = os.path.join(ROOT, "build-python", "cmake")
         configure = [
             "cmake", "-S", ROOT, "-B", build_dir,
-            "-DCMAKE_BUILD_TYPE=Release",
+            "-DCMAKE_BUILD_TYPE=" + (os.environ.get("CMAKE_BUILD_TYPE") or "Release"),
             "-DDCEL_DEVELOPER_MODE=OFF",
             "-DDCEL_BUILD_CLI=OFF",
             "-DDCEL_BUILD_PYTHON=ON",
