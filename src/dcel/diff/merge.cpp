@@ -166,6 +166,26 @@ JsonValue merged_skip_reasons(const std::vector<ShardReport>& shards) {
     return array(std::move(items));
 }
 
+// Sessions: the query steps skipped, by operation, summed over the shards.
+JsonValue merged_skipped_steps(const std::vector<ShardReport>& shards) {
+    std::vector<std::pair<std::string, std::uint64_t>> ops;  // in the order first seen
+    for (const ShardReport& s : shards) {
+        const JsonValue& skipped = member(s, s.report, "skipped_steps", JsonType::Object);
+        for (const auto& [op, value] : skipped.members) {
+            const std::uint64_t n = count_of(s, skipped, op);
+            auto it = std::find_if(ops.begin(), ops.end(), [&](const auto& p) { return p.first == op; });
+            if (it == ops.end()) {
+                ops.emplace_back(op, n);
+            } else {
+                it->second += n;
+            }
+        }
+    }
+    JsonValue out{JsonType::Object, {}, {}, {}};
+    for (const auto& [op, n] : ops) set(out, op, number(n));
+    return out;
+}
+
 JsonValue merged_slow(const std::vector<ShardReport>& shards) {
     std::uint64_t total = 0;
     std::vector<std::pair<std::uint64_t, JsonValue>> cases;
@@ -319,6 +339,11 @@ JsonValue merged_run(const std::vector<ShardReport>& shards, JsonValue failures)
     set(out, "command", text(campaign_command(s0)));
     set(out, "impl", member(s0, s0.report, "impl", JsonType::String));
     set(out, "seed", member(s0, s0.report, "seed", JsonType::Number));
+    if (const JsonValue* sessions = s0.report.find("sessions"); sessions != nullptr && sessions->type == JsonType::True) {
+        set(out, "sessions", boolean(true));
+        set(out, "cycles_only_sessions", number(sum(shards, "cycles_only_sessions")));
+        set(out, "skipped_steps", merged_skipped_steps(shards));
+    }
     set(out, "shard", null());
     set(out, "shards", number(shards.size()));
     const JsonValue* kind = s0.report.find("answer_kind");
@@ -421,6 +446,25 @@ std::string write_json(const JsonValue& value) {
     return out;
 }
 
+// What went unchecked in a merged session run, as dcel diff says it.
+void session_warnings(std::ostream& s, const JsonValue& merged) {
+    if (merged.find("sessions") == nullptr) return;
+    if (const std::uint64_t n = num(merged, "cycles_only_sessions"); n > 0) {
+        s << "warning: " << count(n, "session")
+          << " gave the state as boundary cycles only: where holes and isolated vertices lie went unchecked\n";
+    }
+    const JsonValue* skipped = merged.find("skipped_steps");
+    if (skipped == nullptr || skipped->members.empty()) return;
+    std::uint64_t total = 0;
+    std::string ops;
+    for (const auto& [op, value] : skipped->members) {
+        total += num(*skipped, op);
+        ops += (ops.empty() ? "" : ", ") + std::to_string(num(*skipped, op)) + " " + op;
+    }
+    s << "warning: the answers skipped " << count(total, "query step") << " ({\"skip\": ...}): " << ops
+      << "; they went unchecked\n";
+}
+
 std::string merged_summary(const JsonValue& merged) {
     std::ostringstream s;
     const JsonValue* failures = merged.find("failures");
@@ -430,6 +474,7 @@ std::string merged_summary(const JsonValue& merged) {
     if (n == 0) {
         s << "dcel diff-merge: " << (num(merged, "checked") > 0 ? "agrees on " : "nothing checked in ") << cases << " ("
           << from << ")\n";
+        session_warnings(s, merged);
         return s.str();
     }
     s << "dcel diff-merge: " << count(n, "distinct failure") << " in " << cases << " (" << from << ")\n";
@@ -439,6 +484,7 @@ std::string merged_summary(const JsonValue& merged) {
           << count(num(f, "occurrences"), "case") << " in " << classes_text(f) << ", shrunk to " << shrunk_size(f) << "\n";
         s << "     replay: " << str(f, "replay") << "\n";
     }
+    session_warnings(s, merged);
     return s.str();
 }
 
