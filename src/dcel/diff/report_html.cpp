@@ -4,6 +4,7 @@
 // under the report's answer kind and conventions.
 #include "dcel/diff/report_html.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "dcel/build.hpp"
 #include "dcel/check/answer_drawing.hpp"
 #include "dcel/check/counterexample_svg.hpp"
+#include "dcel/check/session.hpp"
 #include "dcel/diff/failure_class.hpp"
 #include "dcel/diff/html_text.hpp"
 #include "dcel/diff/report.hpp"
@@ -278,9 +280,31 @@ struct FailureView {
     std::optional<check::AnswerKind> kind;
     std::optional<Shapes> answer;  // when the implementation's answer could be read
     std::string why_not_drawn;
+    // A session run's counterexample, drawn at its first wrong step instead.
+    std::optional<check::Session> session;
+    std::size_t step = 0;
 };
 
+// The reference's state before the first wrong step, the step in red, as
+// dcel diff --svg draws it.
+std::string session_picture_html(const FailureView& v) {
+    const std::string title = "dcel diff: " + str(v.outcome, "label") + ", case " +
+                              std::to_string(num(at(v.f, "case"), "number")) + ", seed " + at(v.report, "seed").text;
+    try {
+        const std::string svg = check::render_session_step_svg(*v.session, v.step, title);
+        const std::string caption =
+            v.step < v.session->steps.size()
+                ? "The reference's state before step " + std::to_string(v.step) + ", the first answered wrongly (" +
+                      check::describe_step(v.session->steps[v.step]) + "), the step in red; vertices by session id."
+                : "The reference's state at the end, which the answer gives otherwise; vertices by session id.";
+        return "<figure>\n" + inline_svg(svg) + "<figcaption>" + html_text(caption) + "</figcaption>\n</figure>\n";
+    } catch (const InvalidInput&) {
+        return "<figure><p class=\"cut\">no picture: the session's start graph is no valid graph</p></figure>\n";
+    }
+}
+
 std::string picture_html(const FailureView& v) {
+    if (v.session) return session_picture_html(v);
     if (!v.reference) return "<figure><p class=\"cut\">no picture: the counterexample is no valid graph</p></figure>\n";
     check::CounterexampleDrawing drawing{&*v.graph, &*v.reference};
     drawing.title = "dcel diff: " + str(v.outcome, "label") + ", case " + std::to_string(num(at(v.f, "case"), "number")) +
@@ -367,12 +391,21 @@ std::string replay_html(const FailureView& v) {
 }
 
 std::string failure_html(const JsonValue& report, const JsonValue& f, std::size_t total) {
-    FailureView v{report, f, at(f, "outcome"), std::nullopt, std::nullopt, std::nullopt, std::nullopt, {}};
+    FailureView v{report, f, at(f, "outcome"), std::nullopt, std::nullopt, std::nullopt, std::nullopt, {}, {}, 0};
+    const JsonValue* sessions = report.find("sessions");
     try {
-        v.graph = io::read_graph(str(at(f, "counterexample"), "text"));
-        v.reference.emplace(build(*v.graph));
+        if (sessions != nullptr && sessions->type == io::JsonType::True) {
+            v.session = check::read_session(str(at(f, "counterexample"), "text"));
+            const JsonValue* k = v.outcome.find("first_wrong_step");
+            v.step = std::min<std::size_t>(k != nullptr ? num(v.outcome, "first_wrong_step") : v.session->steps.size(),
+                                           v.session->steps.size());
+        } else {
+            v.graph = io::read_graph(str(at(f, "counterexample"), "text"));
+            v.reference.emplace(build(*v.graph));
+        }
     } catch (const InvalidInput&) {  // a hand-made or damaged report: the page says there is no picture
         v.graph.reset();
+        v.session.reset();
     }
     v.kind = check::answer_kind_from_name(str(v.outcome, "answer_kind"));
     if (v.reference && starts_with(str(v.outcome, "label"), "wrong answer")) {

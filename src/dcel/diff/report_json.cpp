@@ -206,6 +206,10 @@ void write_outcome(JsonWriter& w, const Outcome& o) {
     w.string(std::string_view(o.run.out).substr(0, kShownBytes));
     w.key("stderr_tail");
     w.string(o.run.err_tail);
+    if (o.report.first_wrong_step) {
+        w.key("first_wrong_step");
+        w.count(*o.report.first_wrong_step);
+    }
     w.key("differences");
     w.begin_array(Layout::Lines);
     for (const check::Difference& d : o.report.differences) {
