@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -264,6 +265,34 @@ TEST(CheckTestingSessions, FailureHoldsTheShrunkSessionAndTheSeed) {
     EXPECT_LE(s.start.vertices.size(), 3U) << message;
     EXPECT_LE(s.steps.size(), 2U) << message;
     EXPECT_NE(message.find("wrong-refusal"), std::string::npos) << message;
+}
+
+// The generator's cases print as their session's JSON, and every shrink is
+// a session whose start graph the reference accepts.
+TEST(CheckTestingSessions, GeneratedSessionsShrinkToValidSessions) {
+    dcel::testing::SessionCaseOptions options;
+    options.targeted = true;
+    const rc::Gen<dcel::testing::SessionCase> cases = dcel::testing::session_cases(options);
+    std::size_t shrinks_seen = 0;
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+        const rc::Shrinkable<dcel::testing::SessionCase> drawn = cases(rc::Random(seed), 50);
+        const dcel::testing::SessionCase c = drawn.value();
+        std::ostringstream shown;
+        showValue(c, shown);
+        EXPECT_NE(shown.str().find(dcel::check::write_session(c.session)), std::string::npos) << shown.str();
+        rc::Seq<rc::Shrinkable<dcel::testing::SessionCase>> shrinks = drawn.shrinks();
+        for (int k = 0; k < 30; ++k) {
+            const rc::Maybe<rc::Shrinkable<dcel::testing::SessionCase>> next = shrinks.next();
+            if (!next) break;
+            const dcel::check::Session smaller = next->value().session;
+            EXPECT_NO_THROW((void)dcel::check::run_reference_session(smaller)) << dcel::check::write_session(smaller);
+            EXPECT_LE(smaller.steps.size() + smaller.start.vertices.size(),
+                      c.session.steps.size() + c.session.start.vertices.size())
+                << dcel::check::write_session(smaller);
+            ++shrinks_seen;
+        }
+    }
+    EXPECT_GT(shrinks_seen, 0U);
 }
 
 RC_GTEST_PROP(CheckTestingSessions, prop_right_implementation_in_a_property, ()) {
