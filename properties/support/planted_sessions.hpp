@@ -28,7 +28,7 @@
 #include <memory>
 
 #include "dcel/graph.hpp"
-#include "dcel/testing/check_testing_sessions.hpp"
+#include "dcel/testing/session_implementation.hpp"
 
 namespace dcel::props::planted {
 

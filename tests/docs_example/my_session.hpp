@@ -7,6 +7,6 @@
 #include <memory>
 
 #include "dcel/graph.hpp"
-#include "dcel/testing/check_testing_sessions.hpp"
+#include "dcel/testing/session_implementation.hpp"
 
 std::unique_ptr<dcel::testing::SessionImplementation> my_session(const dcel::PlanarGraph& start);
