@@ -171,7 +171,8 @@ JsonValue merged_skipped_steps(const std::vector<ShardReport>& shards) {
     std::vector<std::pair<std::string, std::uint64_t>> ops;  // in the order first seen
     for (const ShardReport& s : shards) {
         const JsonValue& skipped = member(s, s.report, "skipped_steps", JsonType::Object);
-        for (const auto& [op, value] : skipped.members) {
+        for (const JsonValue::Member& m : skipped.members) {
+            const std::string& op = m.key;
             const std::uint64_t n = count_of(s, skipped, op);
             auto it = std::find_if(ops.begin(), ops.end(), [&](const auto& p) { return p.first == op; });
             if (it == ops.end()) {
@@ -457,9 +458,9 @@ void session_warnings(std::ostream& s, const JsonValue& merged) {
     if (skipped == nullptr || skipped->members.empty()) return;
     std::uint64_t total = 0;
     std::string ops;
-    for (const auto& [op, value] : skipped->members) {
-        total += num(*skipped, op);
-        ops += (ops.empty() ? "" : ", ") + std::to_string(num(*skipped, op)) + " " + op;
+    for (const JsonValue::Member& m : skipped->members) {
+        total += num(*skipped, m.key);
+        ops += (ops.empty() ? "" : ", ") + std::to_string(num(*skipped, m.key)) + " " + m.key;
     }
     s << "warning: the answers skipped " << count(total, "query step") << " ({\"skip\": ...}): " << ops
       << "; they went unchecked\n";
