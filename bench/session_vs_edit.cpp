@@ -100,8 +100,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     dcel::gen::SessionParams params;
-    params.graph = {.family = *family, .seed = std::strtoull(argv[4], nullptr, 10),
-                    .vertices = std::strtoull(argv[2], nullptr, 10)};
+    params.graph = {
+        .family = *family, .seed = std::strtoull(argv[4], nullptr, 10), .vertices = std::strtoull(argv[2], nullptr, 10)};
     params.seed = params.graph.seed;
     params.steps = std::strtoull(argv[3], nullptr, 10);
     const dcel::check::Session generated = dcel::gen::generate_session(params);
@@ -127,7 +127,6 @@ int main(int argc, char** argv) {
         return 2;
     }
     std::printf("%zu vertices, %zu edges; %zu of %zu steps kept (accepted edits and locates)\n",
-                generated.start.vertices.size(), generated.start.edges.size(), kept.steps.size(),
-                generated.steps.size());
+                generated.start.vertices.size(), generated.start.edges.size(), kept.steps.size(), generated.steps.size());
     return 0;
 }
