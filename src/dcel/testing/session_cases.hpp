@@ -32,6 +32,7 @@
 #include "dcel/gen/coordinates.hpp"
 #include "dcel/gen/generate.hpp"
 #include "dcel/gen/session.hpp"
+#include "dcel/testing/graph_cases.hpp"
 
 namespace dcel::testing {
 
@@ -64,18 +65,9 @@ struct SessionCaseOptions {
 
 namespace session_cases_detail {
 
-inline std::vector<gen::Family> families_or_all(std::vector<gen::Family> families) {
-    if (!families.empty()) return families;
-    const auto all = gen::all_families();
-    return {all.begin(), all.end()};
-}
-
-// RapidCheck scales its integer draws by the size, which is 0 on the first
-// case; the targeted draws take the whole range from the first case.
-template <class T>
-rc::Gen<T> unscaled(rc::Gen<T> g) {
-    return rc::gen::resize(100, std::move(g));
-}
+// The families and the unscaled draws are graph_cases.hpp's.
+using graph_cases_detail::families_or_all;
+using graph_cases_detail::unscaled;
 
 // A coordinate class, or none (the start graph as generated: small integers,
 // or near-degenerate doubles): none 4, normal 3, huge 1, tiny 1, subnormal 1,
